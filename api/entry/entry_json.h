@@ -1,0 +1,15 @@
+#pragma once
+// Domain results of paper 002 -> response JSON (field names of API.md).
+
+#include <nlohmann/json.hpp>
+
+#include "domain/entry/entry_length.h"
+#include "domain/entry/main_time.h"
+
+namespace cutcalc::api::entry {
+
+nlohmann::json to_json(const domain::entry::Position& position);
+nlohmann::json to_json(const domain::entry::EntryLengthResult& result);
+nlohmann::json to_json(const domain::entry::MainTimeResult& result);
+
+}  // namespace cutcalc::api::entry

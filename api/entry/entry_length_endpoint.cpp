@@ -1,0 +1,58 @@
+#include "api/entry/entry_length_endpoint.h"
+
+#include "api/domain_error_mapping.h"
+#include "api/entry/contour_reader.h"
+#include "api/entry/entry_json.h"
+#include "api/field_reader.h"
+#include "domain/entry/entry_length.h"
+
+namespace cutcalc::api::entry {
+namespace {
+
+// The request's fields; meaningful only when the reader recorded no error.
+domain::entry::EntryLengthParams read_params(ObjectReader& in) {
+  domain::entry::EntryLengthParams params;
+  params.cutter_diameter_mm = in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
+  params.offset_mm = in.number_or("offset_mm", Bounds::magnitude(), 0.0);
+  params.approach_mm = in.number_or("approach_mm", Bounds::non_negative(), 2.0);
+  ObjectReader entry = in.object("entry", true);
+  params.entry = read_contour(entry, ContourSide::entry).value_or(domain::entry::Contour{});
+
+  ObjectReader exit = in.object("exit", false);
+  const auto exit_contour = read_contour(exit, ContourSide::exit);
+  if (exit.present()) {
+    domain::entry::ExitSide side;
+    side.contour = exit_contour.value_or(domain::entry::Contour{});
+    side.length_mm = in.required_number("length_mm", Bounds::positive()).value_or(0.0);
+    side.extra_path_mm = in.number_or("extra_path_mm", Bounds::non_negative(), 0.0);
+    side.overrun_mm = in.number_or("overrun_mm", Bounds::non_negative(), 2.0);
+    params.exit = side;
+  } else {
+    // Path lengths only mean something with an exit: a lone one is a mistake, not a default.
+    for (const char* key : {"length_mm", "extra_path_mm", "overrun_mm"}) {
+      if (in.has(key)) {
+        in.reject(key, "is only used together with exit");
+      }
+    }
+  }
+  in.reject_unknown_fields();
+  return params;
+}
+
+}  // namespace
+
+HandlerOutcome handle_entry_length(const nlohmann::json& body) {
+  std::vector<FieldError> errors;
+  ObjectReader in = root_reader(body, errors);
+  const auto params = read_params(in);
+  if (!errors.empty()) {
+    return invalid_input(std::move(errors));
+  }
+  const auto result = domain::entry::compute_entry_length(params);
+  if (!result.ok()) {
+    return to_problem(result.error());
+  }
+  return to_json(result.value());
+}
+
+}  // namespace cutcalc::api::entry

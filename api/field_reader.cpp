@@ -1,0 +1,187 @@
+#include "api/field_reader.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace cutcalc::api {
+namespace {
+
+// RFC 6901: '~' and '/' inside a key are escaped as ~0 and ~1.
+std::string escape_pointer_token(std::string_view key) {
+  std::string out;
+  out.reserve(key.size());
+  for (const char c : key) {
+    if (c == '~') {
+      out += "~0";
+    } else if (c == '/') {
+      out += "~1";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string format_bound(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// The message names only the side that was violated: "must be > 0", "must be <= 1000000".
+std::optional<std::string> violated_bound(double value, const Bounds& bounds) {
+  if (bounds.min) {
+    const bool below = bounds.min_inclusive ? value < *bounds.min : value <= *bounds.min;
+    if (below) {
+      return std::string(bounds.min_inclusive ? "must be >= " : "must be > ") +
+             format_bound(*bounds.min);
+    }
+  }
+  if (bounds.max) {
+    const bool above = bounds.max_inclusive ? value > *bounds.max : value >= *bounds.max;
+    if (above) {
+      return std::string(bounds.max_inclusive ? "must be <= " : "must be < ") +
+             format_bound(*bounds.max);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ObjectReader::ObjectReader(const nlohmann::json* value, std::string pointer,
+                           std::vector<FieldError>& errors)
+    : object_(value != nullptr && value->is_object() ? value : nullptr),
+      pointer_(std::move(pointer)),
+      errors_(&errors) {}
+
+bool ObjectReader::has(std::string_view key) const {
+  return object_ != nullptr && object_->find(key) != object_->end();
+}
+
+const nlohmann::json* ObjectReader::find(std::string_view key) {
+  asked_.emplace(key);
+  if (object_ == nullptr) {
+    return nullptr;
+  }
+  const auto it = object_->find(key);
+  return it == object_->end() ? nullptr : &*it;
+}
+
+std::string ObjectReader::child_pointer(std::string_view key) const {
+  return pointer_ + "/" + escape_pointer_token(key);
+}
+
+void ObjectReader::add_error(std::string_view key, std::string detail) {
+  errors_->push_back({child_pointer(key), std::move(detail)});
+}
+
+void ObjectReader::reject(std::string_view key, std::string detail) {
+  asked_.emplace(key);
+  add_error(key, std::move(detail));
+}
+
+std::optional<double> ObjectReader::optional_number(std::string_view key, const Bounds& bounds) {
+  const nlohmann::json* value = find(key);
+  if (value == nullptr) {
+    return std::nullopt;
+  }
+  if (!value->is_number()) {
+    add_error(key, "must be a number");
+    return std::nullopt;
+  }
+  const double number = value->get<double>();
+  if (!std::isfinite(number)) {
+    add_error(key, "must be a finite number");
+    return std::nullopt;
+  }
+  if (const auto violation = violated_bound(number, bounds)) {
+    add_error(key, *violation);
+    return std::nullopt;
+  }
+  return number;
+}
+
+std::optional<double> ObjectReader::required_number(std::string_view key, const Bounds& bounds) {
+  if (present() && !has(key)) {
+    asked_.emplace(key);
+    add_error(key, "is required");
+    return std::nullopt;
+  }
+  return optional_number(key, bounds);
+}
+
+double ObjectReader::number_or(std::string_view key, const Bounds& bounds, double fallback) {
+  return optional_number(key, bounds).value_or(fallback);
+}
+
+std::optional<std::int64_t> ObjectReader::required_integer(std::string_view key, std::int64_t min,
+                                                           std::int64_t max) {
+  const auto number = required_number(
+      key, Bounds{static_cast<double>(min), true, static_cast<double>(max), true});
+  if (!number) {
+    return std::nullopt;
+  }
+  if (std::trunc(*number) != *number) {
+    add_error(key, "must be an integer");
+    return std::nullopt;
+  }
+  return static_cast<std::int64_t>(*number);
+}
+
+std::optional<std::string> ObjectReader::required_choice(
+    std::string_view key, std::initializer_list<std::string_view> allowed) {
+  const nlohmann::json* value = find(key);
+  std::string choices;
+  for (const std::string_view choice : allowed) {
+    choices += (choices.empty() ? "" : ", ") + std::string(choice);
+  }
+  if (value == nullptr) {
+    if (present()) {
+      add_error(key, "is required (one of: " + choices + ")");
+    }
+    return std::nullopt;
+  }
+  if (value->is_string()) {
+    const auto& text = value->get_ref<const std::string&>();
+    for (const std::string_view choice : allowed) {
+      if (text == choice) {
+        return text;
+      }
+    }
+  }
+  add_error(key, "must be one of: " + choices);
+  return std::nullopt;
+}
+
+ObjectReader ObjectReader::object(std::string_view key, bool required) {
+  const nlohmann::json* value = find(key);
+  if (value == nullptr) {
+    if (required && present()) {
+      add_error(key, "is required");
+    }
+  } else if (!value->is_object()) {
+    add_error(key, "must be an object");
+  }
+  return ObjectReader(value, child_pointer(key), *errors_);
+}
+
+void ObjectReader::reject_unknown_fields() {
+  if (object_ == nullptr) {
+    return;
+  }
+  for (const auto& [key, value] : object_->items()) {
+    if (asked_.find(key) == asked_.end()) {
+      add_error(key, "is not a known field");
+    }
+  }
+}
+
+ObjectReader root_reader(const nlohmann::json& body, std::vector<FieldError>& errors) {
+  if (!body.is_object()) {
+    errors.push_back({"", "the request body must be a JSON object"});
+  }
+  return ObjectReader(&body, "", errors);
+}
+
+}  // namespace cutcalc::api

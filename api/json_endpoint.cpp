@@ -1,0 +1,56 @@
+#include "api/json_endpoint.h"
+
+#include <cmath>
+#include <string>
+
+#include <spdlog/spdlog.h>
+
+#include "api/json_body.h"
+
+namespace cutcalc::api {
+
+bool all_numbers_finite(const nlohmann::json& value) {
+  if (value.is_number_float()) {
+    return std::isfinite(value.get<double>());
+  }
+  if (value.is_structured()) {
+    for (const auto& element : value) {
+      if (!all_numbers_finite(element)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
+  const std::string instance(request.path);
+  const std::string request_id(request.request_id);
+  if (!is_json_media_type(request.content_type)) {
+    return problem_response(
+        Problem{ProblemKind::unsupported_media_type,
+                "send the request body as application/json (got \"" +
+                    std::string(request.content_type.substr(0, 100)) + "\")",
+                {}},
+        instance, request_id);
+  }
+  auto parsed = parse_json_body(request.body);
+  if (auto* problem = std::get_if<Problem>(&parsed)) {
+    return problem_response(*problem, instance, request_id);
+  }
+  HandlerOutcome outcome = handler(std::get<nlohmann::json>(parsed));
+  if (auto* problem = std::get_if<Problem>(&outcome)) {
+    return problem_response(*problem, instance, request_id);
+  }
+  const auto& body = std::get<nlohmann::json>(outcome);
+  if (!all_numbers_finite(body)) {
+    spdlog::error("non-finite number in the response of {} (request {}): {}", instance, request_id,
+                  std::string(request.body.substr(0, 4096)));
+    return problem_response(
+        Problem{ProblemKind::internal_error, "the calculation failed; this is a bug in cutcalc", {}},
+        instance, request_id);
+  }
+  return ApiResponse{200, "application/json", body.dump(), {}};
+}
+
+}  // namespace cutcalc::api

@@ -1,0 +1,30 @@
+#pragma once
+// The pipeline every JSON calculation endpoint shares: media type -> strict parse -> the
+// endpoint's handler (read fields -> domain -> serialise) -> a response with no NaN or infinity.
+
+#include <string_view>
+#include <variant>
+
+#include <nlohmann/json.hpp>
+
+#include "api/api_response.h"
+#include "api/problem.h"
+
+namespace cutcalc::api {
+
+struct ApiRequest {
+  std::string_view path;
+  std::string_view content_type;
+  std::string_view body;
+  std::string_view request_id;
+};
+
+using HandlerOutcome = std::variant<nlohmann::json, Problem>;
+using JsonHandler = HandlerOutcome (*)(const nlohmann::json& body);
+
+ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler);
+
+// True when every number in `value` is finite (nlohmann would print NaN as null).
+bool all_numbers_finite(const nlohmann::json& value);
+
+}  // namespace cutcalc::api

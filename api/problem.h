@@ -1,0 +1,50 @@
+#pragma once
+// RFC 9457 problem details: the one error body of the whole API (API.md, "Common rules").
+
+#include <string>
+#include <vector>
+
+#include "api/api_response.h"
+
+namespace cutcalc::api {
+
+struct FieldError {
+  std::string pointer;  // RFC 6901 JSON Pointer into the request; "" = the combination of inputs
+  std::string detail;   // why, e.g. "must be > 0"
+};
+
+enum class ProblemKind {
+  bad_request,             // 400: an HTTP request the server could not process
+  malformed_json,          // 400: a body that is not acceptable JSON
+  payload_too_large,       // 413
+  unsupported_media_type,  // 415
+  invalid_input,           // 422: field errors
+  impossible_input,        // 422: valid fields that the model cannot answer together
+  not_found,               // 404
+  method_not_allowed,      // 405
+  internal_error,          // 500
+  unavailable,             // 503
+};
+
+struct Problem {
+  ProblemKind kind = ProblemKind::internal_error;
+  std::string detail;
+  std::vector<FieldError> errors;
+};
+
+int http_status(ProblemKind kind);
+
+// A problem for field errors; its detail names the first field, e.g. "cutter_diameter_mm must be > 0".
+Problem invalid_input(std::vector<FieldError> errors);
+
+// The response body; instance is the request path, request_id the request's id (may be empty).
+std::string problem_json(const Problem& problem, const std::string& instance,
+                         const std::string& request_id);
+
+// problem_json wrapped as a response with the right status and media type.
+ApiResponse problem_response(const Problem& problem, const std::string& instance = {},
+                             const std::string& request_id = {});
+
+inline constexpr const char* kProblemMediaType = "application/problem+json";
+
+}  // namespace cutcalc::api

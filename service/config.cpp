@@ -1,0 +1,130 @@
+#include "service/config.h"
+
+#include <array>
+#include <charconv>
+#include <string_view>
+
+namespace cutcalc::service {
+namespace {
+
+struct Setting {
+  const char* flag;  // --port
+  const char* env;   // CUTCALC_PORT
+};
+
+constexpr std::array kSettings = {
+    Setting{"--host", "CUTCALC_HOST"},           Setting{"--port", "CUTCALC_PORT"},
+    Setting{"--threads", "CUTCALC_THREADS"},     Setting{"--log-level", "CUTCALC_LOG_LEVEL"},
+    Setting{"--log-format", "CUTCALC_LOG_FORMAT"},
+};
+
+std::optional<long> parse_long(std::string_view text, long min, long max) {
+  long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < min || value > max) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+// Applies one setting; returns an error message, empty on success.
+std::string apply(Config& config, std::string_view flag, const std::string& value) {
+  if (flag == "--host") {
+    if (value.empty()) {
+      return "--host must not be empty";
+    }
+    config.host = value;
+  } else if (flag == "--port") {
+    const auto port = parse_long(value, 0, 65535);
+    if (!port) {
+      return "--port must be an integer 0..65535 (0 picks a free port), got '" + value + "'";
+    }
+    config.port = static_cast<int>(*port);
+  } else if (flag == "--threads") {
+    const auto threads = parse_long(value, 1, 4096);
+    if (!threads) {
+      return "--threads must be an integer 1..4096, got '" + value + "'";
+    }
+    config.http.worker_threads = static_cast<std::size_t>(*threads);
+    if (config.http.max_worker_threads < config.http.worker_threads) {
+      config.http.max_worker_threads = config.http.worker_threads;
+    }
+  } else if (flag == "--log-level") {
+    constexpr std::array levels = {"trace", "debug", "info", "warn", "error", "critical", "off"};
+    for (const char* level : levels) {
+      if (value == level) {
+        config.log_level = value;
+        return {};
+      }
+    }
+    return "--log-level must be one of trace, debug, info, warn, error, critical, off; got '" +
+           value + "'";
+  } else if (flag == "--log-format") {
+    if (value == "text") {
+      config.log_format = LogFormat::text;
+    } else if (value == "json") {
+      config.log_format = LogFormat::json;
+    } else {
+      return "--log-format must be text or json, got '" + value + "'";
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string usage() {
+  return "usage: cutcalc [--host H] [--port P] [--threads N] [--log-level L] [--log-format F]\n"
+         "  --host H        address to listen on (default 127.0.0.1; env CUTCALC_HOST)\n"
+         "  --port P        TCP port, 0 = any free port (default 8080; env CUTCALC_PORT)\n"
+         "  --threads N     worker threads kept ready (default: from the core count;\n"
+         "                  env CUTCALC_THREADS); more are started on demand up to a cap\n"
+         "  --log-level L   trace|debug|info|warn|error|critical|off (default info;\n"
+         "                  env CUTCALC_LOG_LEVEL)\n"
+         "  --log-format F  text|json (default text; env CUTCALC_LOG_FORMAT)\n"
+         "  --help, --version\n";
+}
+
+ConfigOutcome parse_config(const std::vector<std::string>& args,
+                           const std::function<const char*(const char*)>& getenv) {
+  Config config;
+  for (const Setting& setting : kSettings) {
+    if (const char* value = getenv(setting.env); value != nullptr) {
+      if (auto error = apply(config, setting.flag, value); !error.empty()) {
+        return {std::nullopt, std::string(setting.env) + ": " + error, 2};
+      }
+    }
+  }
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string_view arg = args[i];
+    if (arg == "--help" || arg == "-h") {
+      return {std::nullopt, usage(), 0, false};
+    }
+    if (arg == "--version") {
+      return {std::nullopt, {}, 0, true};
+    }
+    std::string value;
+    std::string_view flag = arg;
+    if (const auto equals = arg.find('='); equals != std::string_view::npos) {
+      flag = arg.substr(0, equals);
+      value = std::string(arg.substr(equals + 1));
+    } else if (i + 1 < args.size()) {
+      value = args[++i];
+    } else {
+      return {std::nullopt, std::string(arg) + " needs a value\n" + usage(), 2};
+    }
+    bool known = false;
+    for (const Setting& setting : kSettings) {
+      known = known || flag == setting.flag;
+    }
+    if (!known) {
+      return {std::nullopt, "unknown option " + std::string(flag) + "\n" + usage(), 2};
+    }
+    if (auto error = apply(config, flag, value); !error.empty()) {
+      return {std::nullopt, error, 2};
+    }
+  }
+  return {config, {}, 0};
+}
+
+}  // namespace cutcalc::service

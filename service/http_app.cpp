@@ -1,0 +1,204 @@
+#include "service/http_app.h"
+
+#include <chrono>
+#include <exception>
+#include <string>
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include "api/json_endpoint.h"
+#include "api/problem.h"
+#include "api/routes.h"
+#include "service/build_info.h"
+#include "service/http_tuning.h"
+#include "service/logging.h"
+#include "service/request_id.h"
+
+namespace cutcalc::service {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// What the middleware knows about the request this thread is serving. httplib serves a request
+// from its first byte to its access-log callback on one thread, so thread-local state is exact.
+struct RequestState {
+  Clock::time_point start{};
+  const char* route = "unmatched";  // metric label: a known path or "unmatched", never user text
+  bool counted_in_flight = false;
+};
+thread_local RequestState t_request;
+
+constexpr const char* kRequestIdHeader = "X-Request-Id";
+
+void write(httplib::Response& res, const api::ApiResponse& response) {
+  res.status = response.status;
+  for (const auto& [name, value] : response.headers) {
+    res.set_header(name, value);
+  }
+  res.set_content(response.body, response.content_type.c_str());
+}
+
+void write_problem(const httplib::Request& req, httplib::Response& res, const api::Problem& problem) {
+  write(res, api::problem_response(problem, req.path, res.get_header_value(kRequestIdHeader)));
+}
+
+// Problems for statuses the HTTP library sets by itself, before any handler runs.
+api::Problem library_problem(int status) {
+  switch (status) {
+    case 404:
+      return {api::ProblemKind::not_found, "no such resource", {}};
+    case 413:
+      return {api::ProblemKind::payload_too_large, "the request body exceeds the size limit", {}};
+    default:
+      return {api::ProblemKind::bad_request, "the HTTP request could not be processed", {}};
+  }
+}
+
+void reply_json(httplib::Response& res, const nlohmann::json& body) {
+  res.status = 200;
+  res.set_content(body.dump(), "application/json");
+}
+
+}  // namespace
+
+HttpApp::HttpApp(Config config)
+    : config_(std::move(config)), server_(std::make_unique<TunedServer>()) {
+  apply_http_tuning(*server_, config_.http);
+  install_middleware();
+  install_routes();
+}
+
+HttpApp::~HttpApp() = default;
+
+int HttpApp::bind() {
+  return bind_with_backlog(*server_, config_.host.c_str(), config_.port, config_.http.listen_backlog);
+}
+
+bool HttpApp::serve() { return server_->listen_after_bind(); }
+
+void HttpApp::shutdown() {
+  draining_.store(true);
+  server_->stop();
+}
+
+void HttpApp::install_middleware() {
+  server_->set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    t_request = RequestState{Clock::now(), "unmatched", true};
+    metrics_.enter();
+    const std::string client_id = req.get_header_value(kRequestIdHeader);
+    res.set_header(kRequestIdHeader,
+                   is_acceptable_request_id(client_id) ? client_id : generate_request_id());
+
+    const RouteEntry* route = routes_.find(req.path);
+    if (route == nullptr) {
+      write_problem(req, res, {api::ProblemKind::not_found, "no such resource: " + req.path, {}});
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    t_request.route = route->path.c_str();
+    if (req.method == "OPTIONS") {
+      res.status = 204;
+      res.set_header("Allow", route->allow + ", OPTIONS");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    if (!RouteTable::allows(*route, req.method)) {
+      write_problem(req, res,
+                    {api::ProblemKind::method_not_allowed,
+                     req.method + " is not allowed on " + route->path + "; allowed: " + route->allow,
+                     {}});
+      res.set_header("Allow", route->allow);
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+
+  // Statuses set by the library itself (body too large, malformed request line) get a problem
+  // body too; responses that already have a body are ours and are left alone.
+  server_->set_error_handler(httplib::Server::HandlerWithResponse(
+      [](const httplib::Request& req, httplib::Response& res) {
+    if (!res.body.empty()) {
+      return httplib::Server::HandlerResponse::Unhandled;
+    }
+    if (!res.has_header(kRequestIdHeader)) {
+      res.set_header(kRequestIdHeader, generate_request_id());
+    }
+    write_problem(req, res, library_problem(res.status));
+    return httplib::Server::HandlerResponse::Handled;
+  }));
+
+  server_->set_exception_handler(
+      [](const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
+        std::string what = "unknown exception";
+        try {
+          std::rethrow_exception(std::move(error));
+        } catch (const std::exception& e) {
+          what = e.what();
+        } catch (...) {
+        }
+        spdlog::error("unhandled exception on {} {} (request {}): {}", req.method, req.path,
+                      res.get_header_value(kRequestIdHeader), what);
+        write_problem(req, res,
+                      {api::ProblemKind::internal_error, "an internal error occurred; it was logged", {}});
+      });
+
+  server_->set_logger([this](const httplib::Request& req, const httplib::Response& res) {
+    const double seconds =
+        t_request.counted_in_flight ? std::chrono::duration<double>(Clock::now() - t_request.start).count()
+                                    : 0.0;
+    if (t_request.counted_in_flight) {
+      metrics_.leave();
+    }
+    metrics_.observe(t_request.route, req.method, res.status, seconds);
+    log_access({req.method, req.path, res.status, seconds * 1000.0,
+                res.get_header_value(kRequestIdHeader), req.remote_addr});
+    t_request = RequestState{};
+  });
+}
+
+void HttpApp::install_routes() {
+  for (const api::CalculationRoute& route : api::calculation_routes()) {
+    routes_.add(route.path, "POST");
+    server_->Post(route.path, [handler = route.handler](const httplib::Request& req,
+                                                        httplib::Response& res) {
+      const std::string content_type = req.get_header_value("Content-Type");
+      const std::string request_id = res.get_header_value(kRequestIdHeader);
+      write(res, api::run_json_endpoint({req.path, content_type, req.body, request_id}, handler));
+    });
+  }
+
+  routes_.add("/healthz", "GET, HEAD");
+  server_->Get("/healthz", [](const httplib::Request&, httplib::Response& res) {
+    reply_json(res, {{"status", "ok"}});
+  });
+
+  routes_.add("/readyz", "GET, HEAD");
+  server_->Get("/readyz", [this](const httplib::Request& req, httplib::Response& res) {
+    if (draining_.load()) {
+      write_problem(req, res, {api::ProblemKind::unavailable, "shutting down", {}});
+      return;
+    }
+    reply_json(res, {{"status", "ready"}});
+  });
+
+  routes_.add("/version", "GET, HEAD");
+  server_->Get("/version", [](const httplib::Request&, httplib::Response& res) {
+    reply_json(res, {{"name", "cutcalc"},
+                     {"version", build_version()},
+                     {"commit", build_commit()},
+                     {"build_type", build_type()}});
+  });
+
+  routes_.add("/metrics", "GET, HEAD");
+  server_->Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
+    res.set_content(metrics_.render(), "text/plain; version=0.0.4; charset=utf-8");
+  });
+
+  routes_.add("/openapi.yaml", "GET, HEAD");
+  server_->Get("/openapi.yaml", [](const httplib::Request&, httplib::Response& res) {
+    const std::string_view yaml = embedded_openapi_yaml();
+    res.set_content(yaml.data(), yaml.size(), "application/yaml");
+  });
+}
+
+}  // namespace cutcalc::service

@@ -1,0 +1,43 @@
+#pragma once
+// The HTTP service: the tuned server, the calculation and operational routes, and the middleware
+// every request goes through (request id, 404/405, problem bodies, access log, metrics).
+
+#include <atomic>
+#include <memory>
+
+#include "service/config.h"
+#include "service/metrics.h"
+#include "service/route_table.h"
+
+namespace httplib {
+class Server;
+}
+
+namespace cutcalc::service {
+
+class HttpApp {
+ public:
+  explicit HttpApp(Config config);
+  ~HttpApp();
+  HttpApp(const HttpApp&) = delete;
+  HttpApp& operator=(const HttpApp&) = delete;
+
+  // Binds the configured host and port; returns the bound port (useful with port 0) or -1.
+  int bind();
+  // Serves until shutdown() is called; returns after in-flight requests have been answered.
+  bool serve();
+  // Thread-safe: readiness turns 503, the listener closes, in-flight requests finish.
+  void shutdown();
+
+ private:
+  void install_middleware();
+  void install_routes();
+
+  Config config_;
+  std::unique_ptr<httplib::Server> server_;
+  Metrics metrics_;
+  RouteTable routes_;
+  std::atomic<bool> draining_{false};
+};
+
+}  // namespace cutcalc::service

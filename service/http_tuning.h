@@ -1,0 +1,103 @@
+#pragma once
+// How the HTTP front is tuned: threads, keep-alive, timeouts, limits, backlog. Every field has a
+// default that serves well on a small machine; service/config.cpp fills it from flags and env.
+//
+// Why each default (measured on Debian 12's libcpp-httplib 0.11.4, whose defaults are compiled
+// into the shared library: CPPHTTPLIB_* macros in our code change nothing, only the runtime
+// setters and the virtual hooks do):
+//  - tcp_nodelay: the library sends the status line + headers and the body with two send()
+//    calls; with Nagle on, the body waits for the ACK of the headers, which the client delays
+//    by ~40 ms: 43 ms per request, 38 requests/s on one keep-alive connection.
+//  - threads: the library serves one connection per thread for the connection's whole life,
+//    from a fixed pool of max(8, cores - 1) threads; once that many keep-alive connections are
+//    open, new connections wait until one closes (up to keep_alive_timeout_s). An elastic,
+//    capped pool (service/elastic_thread_pool.h) removes that stall.
+//  - listen_backlog: the library listens with a backlog of 5; a burst of connects overflows it
+//    and the kernel drops SYNs, so clients retry after 1 s, 3 s, ... bind_with_backlog re-listens.
+//  - TunedServer replaces the library's per-connection loop (see below).
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include <httplib.h>
+
+#include "service/elastic_thread_pool.h"
+
+namespace cutcalc::service {
+
+struct HttpTuning {
+  std::size_t worker_threads = 0;            // threads kept ready; 0: max(8, 2 x cores)
+  std::size_t max_worker_threads = 512;      // hard cap on connection-serving threads
+  std::size_t keep_alive_max_requests = 10000;  // requests per keep-alive connection
+  long keep_alive_timeout_s = 5;             // idle keep-alive connection closed after this
+  long read_timeout_ms = 5000;               // longest wait for any single read from a socket
+  long write_timeout_ms = 5000;              // longest wait for any single write to a socket
+  std::size_t max_body_bytes = 64 * 1024;    // larger bodies: 413
+  int listen_backlog = 1024;
+  bool tcp_nodelay = true;
+  // Added with the elastic pool and TunedServer:
+  std::size_t max_pending_connections = 1024;  // accepted, waiting for a thread (at the cap);
+                                               // beyond, accept() pauses: the backlog holds them
+  long idle_thread_timeout_ms = 30000;       // threads above worker_threads exit when idle this long
+  long request_timeout_ms = 10000;           // TunedServer: one whole request (head + body) must
+                                             // arrive within this, from its first byte (slowloris)
+  std::size_t shed_keep_alive_at_busy_threads = 0;  // TunedServer: from this many busy threads
+                                             // on, idle keep-alive connections are closed and
+                                             // responses say Connection: close; 0: 3/4 of the cap
+};
+
+// Threads kept ready for `tuning` on this machine (resolves worker_threads == 0).
+std::size_t effective_worker_threads(const HttpTuning& tuning);
+
+// Counters kept by TunedServer (monotonic, for metrics).
+struct ConnectionCounters {
+  std::atomic<std::uint64_t> connections{0};
+  std::atomic<std::uint64_t> requests{0};
+  std::atomic<std::uint64_t> keep_alive_shed{0};   // idle keep-alive closed under thread pressure
+  std::atomic<std::uint64_t> request_timeouts{0};  // request_timeout_ms exceeded (slowloris)
+};
+
+// httplib::Server with its per-connection loop replaced (it overrides the library's virtual
+// process_and_close_socket, as the library's own SSLServer does) and otherwise unchanged:
+//  - idle keep-alive connections wait in a blocking poll() instead of the library's 10 ms
+//    poll + 1 ms sleep loop (90 wake-ups a second per idle connection);
+//  - when the pool runs short of threads (shed_keep_alive_at_busy_threads), idle keep-alive
+//    connections are closed within 200 ms and responses say Connection: close, so connections
+//    waiting for a thread get one;
+//  - a request's head and body must arrive within request_timeout_ms (slowloris);
+//  - a response goes out in one send() (the library sends headers and body separately), and
+//    input read ahead is kept across the requests of a connection (pipelining).
+// apply_http_tuning() configures it; a TunedServer that was never tuned behaves like
+// httplib::Server with the library's defaults, but with the loop above.
+class TunedServer : public httplib::Server {
+ public:
+  TunedServer();
+  ~TunedServer() override;
+
+  const PoolLoad& pool_load() const { return *load_; }
+  const ConnectionCounters& counters() const { return counters_; }
+
+ private:
+  friend void apply_http_tuning(httplib::Server& server, const HttpTuning& tuning);
+
+  bool process_and_close_socket(socket_t sock) override;
+  bool under_pressure() const;
+
+  std::shared_ptr<PoolLoad> load_;
+  ConnectionCounters counters_;
+  bool tcp_nodelay_on_accept_ = false;
+  long request_timeout_ms_ = 0;  // 0: none
+  std::size_t shed_at_busy_threads_ = 0;  // 0: never
+};
+
+// Applies the tuning to a server before it binds: timeouts, keep-alive, payload limit,
+// TCP_NODELAY and the elastic thread pool; for a TunedServer also its connection loop settings.
+void apply_http_tuning(httplib::Server& server, const HttpTuning& tuning);
+
+// Binds host:port with the tuned listen backlog (the library's own is compiled in at 5).
+// port 0 picks a free port. Returns the bound port, or -1. Then call listen_after_bind().
+int bind_with_backlog(httplib::Server& server, const char* host, int port, int listen_backlog);
+
+}  // namespace cutcalc::service

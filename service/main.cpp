@@ -1,0 +1,46 @@
+// cutcalc: composes configuration, logging, signals and the HTTP app; nothing else lives here.
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+
+#include "service/build_info.h"
+#include "service/config.h"
+#include "service/http_app.h"
+#include "service/logging.h"
+#include "service/signals.h"
+
+int main(int argc, char** argv) {
+  using namespace cutcalc::service;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  const ConfigOutcome outcome = parse_config(args, [](const char* name) { return std::getenv(name); });
+  if (!outcome.config) {
+    const std::string text = outcome.print_version
+                                 ? "cutcalc " + std::string(build_version()) + " (" +
+                                       std::string(build_commit()) + ")\n"
+                                 : outcome.message + "\n";
+    std::fputs(text.c_str(), outcome.exit_code == 0 ? stdout : stderr);
+    return outcome.exit_code;
+  }
+  const Config& config = *outcome.config;
+  setup_logging(config.log_level, config.log_format);
+
+  ShutdownSignals signals;  // before any thread starts, so that all of them inherit the mask
+  HttpApp app(config);
+  const int port = app.bind();
+  if (port < 0) {
+    spdlog::critical("cannot listen on {}:{}", config.host, config.port);
+    return 1;
+  }
+  signals.on_shutdown([&app](const char* signal_name) {
+    spdlog::info("{} received: finishing in-flight requests, then exiting", signal_name);
+    app.shutdown();
+  });
+  spdlog::info("cutcalc {} listening on http://{}:{}", build_version(), config.host, port);
+  const bool served = app.serve();
+  spdlog::info("stopped");
+  return served ? 0 : 1;
+}

@@ -1,0 +1,75 @@
+#include "support/test_server.h"
+
+#include <fstream>
+#include <stdexcept>
+
+namespace cutcalc::testing {
+
+TestServer::TestServer() {
+  service::Config config;
+  config.host = "127.0.0.1";
+  config.port = 0;
+  config.log_level = "off";
+  app_ = std::make_unique<service::HttpApp>(config);
+  port_ = app_->bind();
+  if (port_ <= 0) {
+    throw std::runtime_error("test server could not bind a loopback port");
+  }
+  serving_ = std::thread([this] { app_->serve(); });
+}
+
+TestServer::~TestServer() {
+  app_->shutdown();
+  serving_.join();
+}
+
+std::unique_ptr<httplib::Client> TestServer::client() const {
+  auto client = std::make_unique<httplib::Client>("127.0.0.1", port_);
+  client->set_connection_timeout(5);
+  client->set_read_timeout(10);
+  client->set_write_timeout(10);
+  return client;
+}
+
+TestServer& TestServer::shared() {
+  static TestServer server;
+  return server;
+}
+
+namespace {
+
+JsonReply to_reply(const httplib::Result& result) {
+  JsonReply reply;
+  if (!result) {
+    return reply;
+  }
+  reply.status = result->status;
+  reply.content_type = result->get_header_value("Content-Type");
+  reply.body = result->body;
+  reply.headers = result->headers;
+  reply.json = nlohmann::json::parse(result->body, nullptr, false);
+  return reply;
+}
+
+}  // namespace
+
+JsonReply post(const std::string& path, const std::string& body, const std::string& content_type) {
+  auto client = TestServer::shared().client();
+  return to_reply(client->Post(path.c_str(), body, content_type.c_str()));
+}
+
+JsonReply get(const std::string& path) {
+  auto client = TestServer::shared().client();
+  return to_reply(client->Get(path.c_str()));
+}
+
+nlohmann::json load_reference(const std::string& file_name) {
+  const std::string path = std::string(CUTCALC_REFERENCE_DIR) + "/" + file_name;
+  std::ifstream in(path);
+  if (!in) {
+    throw std::runtime_error("cannot open reference file " + path);
+  }
+  return nlohmann::json::parse(in);
+}
+
+}  // namespace cutcalc::testing
