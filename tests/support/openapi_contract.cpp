@@ -77,21 +77,25 @@ json yaml_to_json(const YAML::Node& node, const std::string& where) {
       return nullptr;
     case YAML::NodeType::Scalar: {
       const std::string& tag = node.Tag();
-      if (tag == "!" || tag == "tag:yaml.org,2002:str") return node.Scalar();  // quoted or block scalar
+      if (tag == "!" || tag == "tag:yaml.org,2002:str")
+        return node.Scalar();  // quoted or block scalar
       return plain_scalar(node.Scalar());
     }
     case YAML::NodeType::Sequence: {
       json out = json::array();
       std::size_t i = 0;
-      for (const auto& item : node) out.push_back(yaml_to_json(item, where + "/" + std::to_string(i++)));
+      for (const auto& item : node)
+        out.push_back(yaml_to_json(item, where + "/" + std::to_string(i++)));
       return out;
     }
     case YAML::NodeType::Map: {
       json out = json::object();
       for (const auto& kv : node) {
-        if (!kv.first.IsScalar()) throw std::runtime_error("openapi: non-scalar mapping key at " + where);
+        if (!kv.first.IsScalar())
+          throw std::runtime_error("openapi: non-scalar mapping key at " + where);
         const std::string key = kv.first.Scalar();
-        if (out.contains(key)) throw std::runtime_error("openapi: duplicate key '" + key + "' at " + where);
+        if (out.contains(key))
+          throw std::runtime_error("openapi: duplicate key '" + key + "' at " + where);
         out[key] = yaml_to_json(kv.second, where + "/" + key);
       }
       return out;
@@ -106,7 +110,8 @@ json yaml_to_json(const YAML::Node& node, const std::string& where) {
 // Small helpers.
 
 std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
 
@@ -131,7 +136,9 @@ std::string escape_token(const std::string& token) {
   return out;
 }
 
-std::string child(const std::string& ptr, const std::string& token) { return ptr + "/" + escape_token(token); }
+std::string child(const std::string& ptr, const std::string& token) {
+  return ptr + "/" + escape_token(token);
+}
 
 void add(std::vector<std::string>& out, const std::string& ptr, const std::string& message) {
   out.push_back("at \"" + ptr + "\": " + message);
@@ -185,8 +192,10 @@ std::size_t utf8_length(const std::string& s) {
 
 std::string schema_label(const json& schema, std::size_t index) {
   if (schema.is_object()) {
-    if (schema.contains("title") && schema["title"].is_string()) return "\"" + schema["title"].get<std::string>() + "\"";
-    if (schema.contains("$ref") && schema["$ref"].is_string()) return schema["$ref"].get<std::string>();
+    if (schema.contains("title") && schema["title"].is_string())
+      return "\"" + schema["title"].get<std::string>() + "\"";
+    if (schema.contains("$ref") && schema["$ref"].is_string())
+      return schema["$ref"].get<std::string>();
   }
   return "#" + std::to_string(index);
 }
@@ -194,19 +203,36 @@ std::string schema_label(const json& schema, std::size_t index) {
 // Keywords the validator evaluates, and annotations it may ignore. Anything else in a schema is an
 // error at load time.
 const std::set<std::string>& validation_keywords() {
-  static const std::set<std::string> k = {
-      "$ref",         "type",          "enum",     "const",    "properties", "required",
-      "additionalProperties",          "dependentRequired",    "dependentSchemas",
-      "items",        "minItems",      "maxItems", "minLength", "maxLength", "pattern",
-      "minimum",      "maximum",       "exclusiveMinimum",     "exclusiveMaximum",
-      "allOf",        "anyOf",         "oneOf",    "not"};
+  static const std::set<std::string> k = {"$ref",
+                                          "type",
+                                          "enum",
+                                          "const",
+                                          "properties",
+                                          "required",
+                                          "additionalProperties",
+                                          "dependentRequired",
+                                          "dependentSchemas",
+                                          "items",
+                                          "minItems",
+                                          "maxItems",
+                                          "minLength",
+                                          "maxLength",
+                                          "pattern",
+                                          "minimum",
+                                          "maximum",
+                                          "exclusiveMinimum",
+                                          "exclusiveMaximum",
+                                          "allOf",
+                                          "anyOf",
+                                          "oneOf",
+                                          "not"};
   return k;
 }
 const std::set<std::string>& annotation_keywords() {
-  static const std::set<std::string> k = {"title",    "description", "default",  "example",  "examples",
-                                          "format",   "discriminator", "deprecated", "readOnly", "writeOnly",
-                                          "$comment", "externalDocs", "xml",     "contentMediaType",
-                                          "contentEncoding"};
+  static const std::set<std::string> k = {
+      "title",    "description",   "default",    "example",          "examples",
+      "format",   "discriminator", "deprecated", "readOnly",         "writeOnly",
+      "$comment", "externalDocs",  "xml",        "contentMediaType", "contentEncoding"};
   return k;
 }
 
@@ -218,7 +244,8 @@ class Validator {
   explicit Validator(const json& doc) : doc_(doc) {}
 
   const json& resolve(const std::string& ref) const {
-    if (ref.empty() || ref[0] != '#') throw std::runtime_error("openapi: only local $ref is supported: " + ref);
+    if (ref.empty() || ref[0] != '#')
+      throw std::runtime_error("openapi: only local $ref is supported: " + ref);
     const json::json_pointer ptr(ref.substr(1));
     if (!doc_.contains(ptr)) throw std::runtime_error("openapi: $ref does not resolve: " + ref);
     return doc_.at(ptr);
@@ -227,12 +254,13 @@ class Validator {
   // Follows $ref chains of OpenAPI objects (responses, headers, parameters, request bodies).
   const json& deref(const json& obj) const {
     const json* cur = &obj;
-    for (int i = 0; i < 16 && cur->is_object() && cur->contains("$ref"); ++i) cur = &resolve((*cur)["$ref"].get<std::string>());
+    for (int i = 0; i < 16 && cur->is_object() && cur->contains("$ref"); ++i)
+      cur = &resolve((*cur)["$ref"].get<std::string>());
     return *cur;
   }
 
-  void validate(const json& schema, const json& v, const std::string& ptr, std::vector<std::string>& out,
-                int depth = 0) const {
+  void validate(const json& schema, const json& v, const std::string& ptr,
+                std::vector<std::string>& out, int depth = 0) const {
     if (depth > 64) {
       add(out, ptr, "schema nesting deeper than 64 (a $ref cycle?)");
       return;
@@ -245,7 +273,8 @@ class Validator {
       add(out, ptr, "schema is neither an object nor a boolean");
       return;
     }
-    if (schema.contains("$ref")) validate(resolve(schema["$ref"].get<std::string>()), v, ptr, out, depth + 1);
+    if (schema.contains("$ref"))
+      validate(resolve(schema["$ref"].get<std::string>()), v, ptr, out, depth + 1);
 
     if (schema.contains("type")) {
       const json& t = schema["type"];
@@ -256,13 +285,16 @@ class Validator {
         for (const auto& one : t) ok = ok || matches_type(one.get<std::string>(), v);
       }
       if (!ok) {
-        add(out, ptr, "expected type " + (t.is_string() ? t.get<std::string>() : t.dump()) + ", got " + type_name(v));
+        add(out, ptr,
+            "expected type " + (t.is_string() ? t.get<std::string>() : t.dump()) + ", got " +
+                type_name(v));
         return;  // the remaining keywords would only repeat the mismatch
       }
     }
     if (schema.contains("enum")) {
       const json& e = schema["enum"];
-      if (std::find(e.begin(), e.end(), v) == e.end()) add(out, ptr, "must be one of " + e.dump() + ", got " + v.dump());
+      if (std::find(e.begin(), e.end(), v) == e.end())
+        add(out, ptr, "must be one of " + e.dump() + ", got " + v.dump());
     }
     if (schema.contains("const") && v != schema["const"]) {
       add(out, ptr, "must be " + schema["const"].dump() + ", got " + v.dump());
@@ -275,7 +307,8 @@ class Validator {
   }
 
  private:
-  static void check_number(const json& schema, const json& v, const std::string& ptr, std::vector<std::string>& out) {
+  static void check_number(const json& schema, const json& v, const std::string& ptr,
+                           std::vector<std::string>& out) {
     const double d = v.get<double>();
     if (!std::isfinite(d)) add(out, ptr, "must be a finite number");
     if (schema.contains("minimum") && !(d >= schema["minimum"].get<double>())) {
@@ -285,14 +318,19 @@ class Validator {
       add(out, ptr, "must be <= " + schema["maximum"].dump() + " (maximum), got " + v.dump());
     }
     if (schema.contains("exclusiveMinimum") && !(d > schema["exclusiveMinimum"].get<double>())) {
-      add(out, ptr, "must be > " + schema["exclusiveMinimum"].dump() + " (exclusiveMinimum), got " + v.dump());
+      add(out, ptr,
+          "must be > " + schema["exclusiveMinimum"].dump() + " (exclusiveMinimum), got " +
+              v.dump());
     }
     if (schema.contains("exclusiveMaximum") && !(d < schema["exclusiveMaximum"].get<double>())) {
-      add(out, ptr, "must be < " + schema["exclusiveMaximum"].dump() + " (exclusiveMaximum), got " + v.dump());
+      add(out, ptr,
+          "must be < " + schema["exclusiveMaximum"].dump() + " (exclusiveMaximum), got " +
+              v.dump());
     }
   }
 
-  static void check_string(const json& schema, const json& v, const std::string& ptr, std::vector<std::string>& out) {
+  static void check_string(const json& schema, const json& v, const std::string& ptr,
+                           std::vector<std::string>& out) {
     const std::string& s = v.get_ref<const std::string&>();
     const std::size_t n = utf8_length(s);
     if (schema.contains("minLength") && n < schema["minLength"].get<std::size_t>()) {
@@ -313,26 +351,33 @@ class Validator {
     }
   }
 
-  void check_array(const json& schema, const json& v, const std::string& ptr, std::vector<std::string>& out,
-                   int depth) const {
+  void check_array(const json& schema, const json& v, const std::string& ptr,
+                   std::vector<std::string>& out, int depth) const {
     if (schema.contains("minItems") && v.size() < schema["minItems"].get<std::size_t>()) {
-      add(out, ptr, "must have at least " + schema["minItems"].dump() + " items, has " + std::to_string(v.size()));
+      add(out, ptr,
+          "must have at least " + schema["minItems"].dump() + " items, has " +
+              std::to_string(v.size()));
     }
     if (schema.contains("maxItems") && v.size() > schema["maxItems"].get<std::size_t>()) {
-      add(out, ptr, "must have at most " + schema["maxItems"].dump() + " items, has " + std::to_string(v.size()));
+      add(out, ptr,
+          "must have at most " + schema["maxItems"].dump() + " items, has " +
+              std::to_string(v.size()));
     }
     if (schema.contains("items")) {
-      for (std::size_t i = 0; i < v.size(); ++i) validate(schema["items"], v[i], child(ptr, std::to_string(i)), out, depth + 1);
+      for (std::size_t i = 0; i < v.size(); ++i)
+        validate(schema["items"], v[i], child(ptr, std::to_string(i)), out, depth + 1);
     }
   }
 
-  void check_object(const json& schema, const json& v, const std::string& ptr, std::vector<std::string>& out,
-                    int depth) const {
+  void check_object(const json& schema, const json& v, const std::string& ptr,
+                    std::vector<std::string>& out, int depth) const {
     if (schema.contains("required")) {
       for (const auto& name : schema["required"]) {
         const std::string key = name.get<std::string>();
         if (!v.contains(key)) {
-          add(out, ptr, "missing required property \"" + key + "\" (expected at \"" + child(ptr, key) + "\")");
+          add(out, ptr,
+              "missing required property \"" + key + "\" (expected at \"" + child(ptr, key) +
+                  "\")");
         }
       }
     }
@@ -344,7 +389,8 @@ class Validator {
       } else if (schema.contains("additionalProperties")) {
         const json& extra = schema["additionalProperties"];
         if (extra.is_boolean() && !extra.get<bool>()) {
-          add(out, child(ptr, key), "property \"" + key + "\" is not allowed (additionalProperties: false)");
+          add(out, child(ptr, key),
+              "property \"" + key + "\" is not allowed (additionalProperties: false)");
         } else {
           validate(extra, value, child(ptr, key), out, depth + 1);
         }
@@ -355,7 +401,9 @@ class Validator {
         if (!v.contains(key)) continue;
         for (const auto& dep : deps) {
           const std::string d = dep.get<std::string>();
-          if (!v.contains(d)) add(out, ptr, "property \"" + key + "\" requires property \"" + d + "\" (dependentRequired)");
+          if (!v.contains(d))
+            add(out, ptr,
+                "property \"" + key + "\" requires property \"" + d + "\" (dependentRequired)");
         }
       }
     }
@@ -374,13 +422,15 @@ class Validator {
     const std::string prop = disc.value("propertyName", "");
     if (prop.empty()) return nullptr;
     if (!v.contains(prop)) {
-      add(out, ptr, "missing required property \"" + prop + "\" (the discriminator; expected at \"" + child(ptr, prop) +
-                        "\")");
+      add(out, ptr,
+          "missing required property \"" + prop + "\" (the discriminator; expected at \"" +
+              child(ptr, prop) + "\")");
       return &schema;  // reported; no branch to descend into
     }
     const json& value = v[prop];
     std::string target;
-    if (value.is_string() && disc.contains("mapping") && disc["mapping"].contains(value.get<std::string>())) {
+    if (value.is_string() && disc.contains("mapping") &&
+        disc["mapping"].contains(value.get<std::string>())) {
       target = disc["mapping"][value.get<std::string>()].get<std::string>();
     }
     if (target.empty()) {
@@ -388,7 +438,8 @@ class Validator {
       if (disc.contains("mapping")) {
         for (const auto& [k, unused] : disc["mapping"].items()) allowed.push_back(k);
       }
-      add(out, child(ptr, prop), "must be one of " + allowed.dump() + " (discriminator), got " + value.dump());
+      add(out, child(ptr, prop),
+          "must be one of " + allowed.dump() + " (discriminator), got " + value.dump());
       return &schema;
     }
     for (const auto& branch : schema["oneOf"]) {
@@ -397,8 +448,8 @@ class Validator {
     return nullptr;
   }
 
-  void check_composition(const json& schema, const json& v, const std::string& ptr, std::vector<std::string>& out,
-                         int depth) const {
+  void check_composition(const json& schema, const json& v, const std::string& ptr,
+                         std::vector<std::string>& out, int depth) const {
     if (schema.contains("allOf")) {
       for (const auto& sub : schema["allOf"]) validate(sub, v, ptr, out, depth + 1);
     }
@@ -445,7 +496,9 @@ class Validator {
       if (matched.size() > 1) {
         std::string names;
         for (const auto& m : matched) names += (names.empty() ? "" : ", ") + m;
-        add(out, ptr, "must match exactly one schema of oneOf, matches " + std::to_string(matched.size()) + ": " + names);
+        add(out, ptr,
+            "must match exactly one schema of oneOf, matches " + std::to_string(matched.size()) +
+                ": " + names);
       } else if (matched.empty()) {
         std::vector<std::string> disc_errs;
         const json* branch = discriminated_branch(schema, v, ptr, disc_errs);
@@ -454,7 +507,9 @@ class Validator {
         } else if (branch != nullptr) {
           validate(*branch, v, ptr, out, depth + 1);
         } else {
-          add(out, ptr, "must match exactly one schema of oneOf, matches none; closest " + closest_label + ":");
+          add(out, ptr,
+              "must match exactly one schema of oneOf, matches none; closest " + closest_label +
+                  ":");
           out.insert(out.end(), closest.begin(), closest.end());
         }
       }
@@ -465,7 +520,8 @@ class Validator {
       if (errs.empty()) {
         const json& n = schema["not"];
         std::string what = schema_label(n, 0);
-        if (n.is_object() && n.contains("description")) what += " (" + n["description"].get<std::string>() + ")";
+        if (n.is_object() && n.contains("description"))
+          what += " (" + n["description"].get<std::string>() + ")";
         add(out, ptr, "must not match the schema in not: " + what);
       }
     }
@@ -498,7 +554,8 @@ void check_schema_keywords(const json& schema, const std::string& where, const V
         problems.push_back(at + ": " + e.what());
       }
     } else if (key == "properties" || key == "dependentSchemas") {
-      for (const auto& [name, sub] : value.items()) check_schema_keywords(sub, at + "/" + escape_token(name), validator, problems);
+      for (const auto& [name, sub] : value.items())
+        check_schema_keywords(sub, at + "/" + escape_token(name), validator, problems);
     } else if (key == "items") {
       if (value.is_array()) {
         problems.push_back(at + ": the array form of items is not supported");
@@ -509,7 +566,8 @@ void check_schema_keywords(const json& schema, const std::string& where, const V
       check_schema_keywords(value, at, validator, problems);
     } else if (key == "allOf" || key == "anyOf" || key == "oneOf") {
       std::size_t i = 0;
-      for (const auto& sub : value) check_schema_keywords(sub, at + "/" + std::to_string(i++), validator, problems);
+      for (const auto& sub : value)
+        check_schema_keywords(sub, at + "/" + std::to_string(i++), validator, problems);
     }
   }
 }
@@ -519,7 +577,8 @@ void check_document(const json& node, const std::string& where, const Validator&
                     std::vector<std::string>& problems) {
   if (node.is_array()) {
     std::size_t i = 0;
-    for (const auto& item : node) check_document(item, where + "/" + std::to_string(i++), validator, problems);
+    for (const auto& item : node)
+      check_document(item, where + "/" + std::to_string(i++), validator, problems);
     return;
   }
   if (!node.is_object()) return;
@@ -529,7 +588,8 @@ void check_document(const json& node, const std::string& where, const Validator&
     if (key == "schema") {
       check_schema_keywords(value, at, validator, problems);
     } else if (key == "schemas" && where == "/components") {
-      for (const auto& [name, sub] : value.items()) check_schema_keywords(sub, at + "/" + escape_token(name), validator, problems);
+      for (const auto& [name, sub] : value.items())
+        check_schema_keywords(sub, at + "/" + escape_token(name), validator, problems);
     } else if (key == "$ref" && value.is_string()) {
       try {
         validator.resolve(value.get<std::string>());
@@ -546,7 +606,7 @@ void check_document(const json& node, const std::string& where, const Validator&
 // Media types.
 
 struct MediaType {
-  std::string essence;                       // "type/subtype", lower case
+  std::string essence;                        // "type/subtype", lower case
   std::map<std::string, std::string> params;  // name lower case, value unquoted
 };
 
@@ -556,13 +616,15 @@ MediaType parse_media_type(const std::string& text) {
   m.essence = lower(trim(text.substr(0, pos)));
   while (pos != std::string::npos) {
     const std::size_t next = text.find(';', pos + 1);
-    const std::string part = trim(text.substr(pos + 1, next == std::string::npos ? std::string::npos : next - pos - 1));
+    const std::string part =
+        trim(text.substr(pos + 1, next == std::string::npos ? std::string::npos : next - pos - 1));
     pos = next;
     const std::size_t eq = part.find('=');
     if (part.empty() || eq == std::string::npos) continue;
     const std::string name = lower(trim(part.substr(0, eq)));
     std::string value = trim(part.substr(eq + 1));
-    if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
+    if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+      value = value.substr(1, value.size() - 2);
     if (name == "charset") value = lower(value);
     m.params[name] = value;
   }
@@ -608,7 +670,8 @@ std::string documented_keys(const json& obj) {
 }
 
 const std::set<std::string>& http_methods() {
-  static const std::set<std::string> m = {"get", "put", "post", "delete", "options", "head", "patch", "trace"};
+  static const std::set<std::string> m = {"get",     "put",  "post",  "delete",
+                                          "options", "head", "patch", "trace"};
   return m;
 }
 
@@ -642,7 +705,8 @@ OpenApiContract OpenApiContract::load(const std::string& path) {
 
 nlohmann::json OpenApiContract::document() const { return document_; }
 
-const nlohmann::json* OpenApiContract::find_response(const std::string& method, const std::string& path, int status,
+const nlohmann::json* OpenApiContract::find_response(const std::string& method,
+                                                     const std::string& path, int status,
                                                      std::vector<std::string>& violations) const {
   const Validator validator(document_);
   const std::string m = lower(method);
@@ -652,14 +716,16 @@ const nlohmann::json* OpenApiContract::find_response(const std::string& method, 
     if (status == 404 && document_.contains("x-cutcalc-unmatched-route")) {
       return &validator.deref(document_["x-cutcalc-unmatched-route"]["response"]);
     }
-    violations.push_back(what + ": path is not documented (and status " + std::to_string(status) + " is not 404)");
+    violations.push_back(what + ": path is not documented (and status " + std::to_string(status) +
+                         " is not 404)");
     return nullptr;
   }
   const nlohmann::json& item = paths[path];
   if (!item.contains(m)) {
     if (status == 405) {
       for (const auto& [key, op] : item.items()) {
-        if (http_methods().count(key) != 0 && op.contains("responses") && op["responses"].contains("405")) {
+        if (http_methods().count(key) != 0 && op.contains("responses") &&
+            op["responses"].contains("405")) {
           return &validator.deref(op["responses"]["405"]);
         }
       }
@@ -668,15 +734,17 @@ const nlohmann::json* OpenApiContract::find_response(const std::string& method, 
     return nullptr;
   }
   const nlohmann::json& responses = item[m]["responses"];
-  for (const std::string& key : {std::to_string(status), std::to_string(status / 100) + "XX", std::string("default")}) {
+  for (const std::string& key :
+       {std::to_string(status), std::to_string(status / 100) + "XX", std::string("default")}) {
     if (responses.contains(key)) return &validator.deref(responses[key]);
   }
-  violations.push_back(what + ": status " + std::to_string(status) + " is not documented (documented: " +
-                       documented_keys(responses) + ")");
+  violations.push_back(what + ": status " + std::to_string(status) +
+                       " is not documented (documented: " + documented_keys(responses) + ")");
   return nullptr;
 }
 
-std::vector<std::string> OpenApiContract::check_response(const std::string& method, const std::string& path, int status,
+std::vector<std::string> OpenApiContract::check_response(const std::string& method,
+                                                         const std::string& path, int status,
                                                          const std::string& content_type,
                                                          const nlohmann::json& body) const {
   std::vector<std::string> violations;
@@ -694,15 +762,17 @@ std::vector<std::string> OpenApiContract::check_response(const std::string& meth
   }
   const nlohmann::json* media = match_media_type(content, content_type);
   if (media == nullptr) {
-    violations.push_back(what + ": Content-Type \"" + content_type + "\" is not documented (documented: " +
-                         documented_keys(content) + ")");
+    violations.push_back(what + ": Content-Type \"" + content_type +
+                         "\" is not documented (documented: " + documented_keys(content) + ")");
     return violations;
   }
-  if (media->contains("schema")) Validator(document_).validate((*media)["schema"], body, "", violations);
+  if (media->contains("schema"))
+    Validator(document_).validate((*media)["schema"], body, "", violations);
   return violations;
 }
 
-std::vector<std::string> OpenApiContract::check_request(const std::string& method, const std::string& path,
+std::vector<std::string> OpenApiContract::check_request(const std::string& method,
+                                                        const std::string& path,
                                                         const nlohmann::json& body) const {
   std::vector<std::string> violations;
   const std::string m = lower(method);
@@ -719,8 +789,9 @@ std::vector<std::string> OpenApiContract::check_request(const std::string& metho
     return violations;
   }
   const nlohmann::json& request_body = validator.deref(op["requestBody"]);
-  const nlohmann::json* media =
-      request_body.contains("content") ? match_media_type(request_body["content"], "application/json") : nullptr;
+  const nlohmann::json* media = request_body.contains("content")
+                                    ? match_media_type(request_body["content"], "application/json")
+                                    : nullptr;
   if (media == nullptr) {
     violations.push_back(what + ": no application/json request body is documented");
     return violations;
@@ -729,9 +800,9 @@ std::vector<std::string> OpenApiContract::check_request(const std::string& metho
   return violations;
 }
 
-std::vector<std::string> OpenApiContract::check_response_headers(const std::string& method, const std::string& path,
-                                                                 int status,
-                                                                 const std::map<std::string, std::string>& headers) const {
+std::vector<std::string> OpenApiContract::check_response_headers(
+    const std::string& method, const std::string& path, int status,
+    const std::map<std::string, std::string>& headers) const {
   std::vector<std::string> violations;
   const nlohmann::json* response = find_response(method, path, status, violations);
   if (response == nullptr || !response->contains("headers")) return violations;
@@ -742,7 +813,8 @@ std::vector<std::string> OpenApiContract::check_response_headers(const std::stri
     const nlohmann::json& header = validator.deref(header_ref);
     const auto it = by_lower_name.find(lower(name));
     if (it == by_lower_name.end()) {
-      if (header.value("required", false)) violations.push_back("header " + name + ": required but missing");
+      if (header.value("required", false))
+        violations.push_back("header " + name + ": required but missing");
       continue;
     }
     if (!header.contains("schema")) continue;
@@ -753,7 +825,8 @@ std::vector<std::string> OpenApiContract::check_response_headers(const std::stri
   return violations;
 }
 
-std::vector<std::string> OpenApiContract::check_schema(const std::string& schema_ref, const nlohmann::json& value) const {
+std::vector<std::string> OpenApiContract::check_schema(const std::string& schema_ref,
+                                                       const nlohmann::json& value) const {
   std::vector<std::string> violations;
   const Validator validator(document_);
   validator.validate(validator.resolve(schema_ref), value, "", violations);

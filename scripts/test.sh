@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Sets up, then builds and runs every test twice: an optimised release build, and a Debug build
+# with AddressSanitizer + UndefinedBehaviorSanitizer. Any warning fails the build (-Werror); any
+# test failure or sanitizer report fails the run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+
+for preset in release dev; do
+  echo "=== ${preset}: configure and build"
+  cmake --preset "$preset"
+  cmake --build --preset "$preset"
+  echo "=== ${preset}: test"
+  ctest --preset "$preset" -j 2
+done
+echo "=== all tests passed (release and sanitizer builds)"
