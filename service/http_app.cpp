@@ -97,11 +97,6 @@ void HttpApp::install_middleware() {
       return httplib::Server::HandlerResponse::Handled;
     }
     t_request.route = route->path.c_str();
-    if (req.method == "OPTIONS") {
-      res.status = 204;
-      res.set_header("Allow", route->allow + ", OPTIONS");
-      return httplib::Server::HandlerResponse::Handled;
-    }
     if (!RouteTable::allows(*route, req.method)) {
       write_problem(req, res,
                     {api::ProblemKind::method_not_allowed,

@@ -1,6 +1,7 @@
 // openapi.yaml is the formal contract: these tests check that the document is complete and
-// self-consistent (its examples satisfy its own schemas, every operation documents its errors), that
-// the reference cases satisfy it, and that the contract checker used by the API tests can fail.
+// self-consistent (its examples satisfy its own schemas, every operation documents its errors),
+// that the reference cases satisfy it, and that the contract checker used by the API tests can
+// fail.
 
 #include <fstream>
 #include <map>
@@ -34,14 +35,18 @@ const json& doc() {
 
 std::string join(const std::vector<std::string>& lines) {
   std::string out;
-  for (const auto& l : lines) out += "\n  " + l;
+  for (const auto& l : lines) {
+    out += "\n  " + l;
+  }
   return out;
 }
 
 // True if one violation names this JSON Pointer (violations quote the pointer they are about).
 bool names_pointer(const std::vector<std::string>& violations, const std::string& pointer) {
   for (const auto& v : violations) {
-    if (v.find("\"" + pointer + "\"") != std::string::npos) return true;
+    if (v.find("\"" + pointer + "\"") != std::string::npos) {
+      return true;
+    }
   }
   return false;
 }
@@ -54,7 +59,8 @@ const json& deref(const json& obj) {
   return *cur;
 }
 
-const std::set<std::string> kMethods = {"get", "put", "post", "delete", "options", "head", "patch", "trace"};
+const std::set<std::string> kMethods = {"get",     "put",  "post",  "delete",
+                                        "options", "head", "patch", "trace"};
 
 struct Operation {
   std::string method;  // upper case
@@ -66,9 +72,13 @@ std::vector<Operation> operations() {
   std::vector<Operation> ops;
   for (const auto& [path, item] : doc()["paths"].items()) {
     for (const auto& [method, op] : item.items()) {
-      if (kMethods.count(method) == 0) continue;
+      if (kMethods.count(method) == 0) {
+        continue;
+      }
       std::string upper = method;
-      for (auto& c : upper) c = static_cast<char>(c - 'a' + 'A');
+      for (auto& c : upper) {
+        c = static_cast<char>(c - 'a' + 'A');
+      }
       ops.push_back({upper, path, &op});
     }
   }
@@ -78,11 +88,15 @@ std::vector<Operation> operations() {
 // (name, value) of every example of a media type object.
 std::vector<std::pair<std::string, json>> examples_of(const json& media) {
   std::vector<std::pair<std::string, json>> out;
-  if (media.contains("example")) out.emplace_back("example", media["example"]);
+  if (media.contains("example")) {
+    out.emplace_back("example", media["example"]);
+  }
   if (media.contains("examples")) {
     for (const auto& [name, ex] : media["examples"].items()) {
       const json& e = deref(ex);
-      if (e.contains("value")) out.emplace_back(name, e["value"]);
+      if (e.contains("value")) {
+        out.emplace_back(name, e["value"]);
+      }
     }
   }
   return out;
@@ -105,9 +119,14 @@ json main_time_request() {
     "allowance": {"width_mm": 80, "width_of_cut_mm": 45, "depth_mm": 5, "depth_of_cut_mm": 2}})");
 }
 
-json problem(const std::string& type, const std::string& title, int status, json errors = json::array()) {
-  return json{{"type", type},     {"title", title},          {"status", status},
-              {"detail", "x"},    {"instance", "/v1/main-time"}, {"request_id", "abc-1"},
+json problem(const std::string& type, const std::string& title, int status,
+             json errors = json::array()) {
+  return json{{"type", type},
+              {"title", title},
+              {"status", status},
+              {"detail", "x"},
+              {"instance", "/v1/main-time"},
+              {"request_id", "abc-1"},
               {"errors", std::move(errors)}};
 }
 
@@ -120,8 +139,8 @@ TEST(OpenApiDocument, LoadsAsOpenApi31WithInfoAndServers) {
   EXPECT_EQ(doc()["info"]["version"], "0.1.0");
   EXPECT_EQ(doc()["info"]["license"]["name"], "MIT");
   EXPECT_EQ(doc()["servers"][0]["url"], "http://127.0.0.1:8080");
-  for (const char* path : {"/v1/entry-length", "/v1/main-time", "/healthz", "/readyz", "/version", "/metrics",
-                           "/openapi.yaml"}) {
+  for (const char* path : {"/v1/entry-length", "/v1/main-time", "/healthz", "/readyz", "/version",
+                           "/metrics", "/openapi.yaml"}) {
     EXPECT_TRUE(doc()["paths"].contains(path)) << path;
   }
 }
@@ -131,10 +150,11 @@ TEST(OpenApiDocument, YamlScalarsKeepTheirTypes) {
   EXPECT_TRUE(straight["angle_deg"]["exclusiveMaximum"].is_number_integer());
   EXPECT_EQ(straight["angle_deg"]["exclusiveMaximum"], 180);
   EXPECT_TRUE(straight["contour"]["const"].is_string());
-  EXPECT_TRUE(doc()["paths"]["/v1/entry-length"]["post"]["responses"].contains("200"));  // quoted key
+  EXPECT_TRUE(
+      doc()["paths"]["/v1/entry-length"]["post"]["responses"].contains("200"));  // quoted key
   EXPECT_TRUE(doc()["paths"]["/v1/entry-length"]["post"]["requestBody"]["required"].is_boolean());
-  const json& worked = doc()["paths"]["/v1/main-time"]["post"]["requestBody"]["content"]["application/json"]
-                           ["examples"]["worked"]["value"];
+  const json& worked = doc()["paths"]["/v1/main-time"]["post"]["requestBody"]["content"]
+                            ["application/json"]["examples"]["worked"]["value"];
   EXPECT_TRUE(worked["feed_per_tooth_mm"].is_number_float());
   EXPECT_EQ(worked["feed_per_tooth_mm"], 0.1);
 }
@@ -161,14 +181,18 @@ TEST(OpenApiDocument, RejectsUnsupportedSchemaKeywordsAndMissingFiles) {
 TEST(OpenApiDocument, EveryRequestExampleMatchesItsSchema) {
   int checked = 0;
   for (const auto& o : operations()) {
-    if (!o.op->contains("requestBody")) continue;
+    if (!o.op->contains("requestBody")) {
+      continue;
+    }
     const json& body = deref((*o.op)["requestBody"]);
     for (const auto& [media_type, media] : body["content"].items()) {
       const auto examples = examples_of(media);
-      EXPECT_FALSE(examples.empty()) << o.method << " " << o.path << " " << media_type << " has no request example";
+      EXPECT_FALSE(examples.empty())
+          << o.method << " " << o.path << " " << media_type << " has no request example";
       for (const auto& [name, value] : examples) {
         const auto v = contract().check_request(o.method, o.path, value);
-        EXPECT_TRUE(v.empty()) << o.method << " " << o.path << " request example " << name << join(v);
+        EXPECT_TRUE(v.empty()) << o.method << " " << o.path << " request example " << name
+                               << join(v);
         ++checked;
       }
     }
@@ -184,11 +208,13 @@ TEST(OpenApiDocument, EveryResponseExampleMatchesItsSchema) {
       ASSERT_TRUE(response.contains("content")) << o.method << " " << o.path << " " << status;
       for (const auto& [media_type, media] : response["content"].items()) {
         const auto examples = examples_of(media);
-        EXPECT_FALSE(examples.empty()) << o.method << " " << o.path << " " << status << " " << media_type
-                                       << " has no example";
+        EXPECT_FALSE(examples.empty())
+            << o.method << " " << o.path << " " << status << " " << media_type << " has no example";
         for (const auto& [name, value] : examples) {
-          const auto v = contract().check_response(o.method, o.path, std::stoi(status), media_type, value);
-          EXPECT_TRUE(v.empty()) << o.method << " " << o.path << " " << status << " example " << name << join(v);
+          const auto v =
+              contract().check_response(o.method, o.path, std::stoi(status), media_type, value);
+          EXPECT_TRUE(v.empty()) << o.method << " " << o.path << " " << status << " example "
+                                 << name << join(v);
           ++checked;
         }
       }
@@ -222,16 +248,21 @@ TEST(OpenApiDocument, EveryOperationHasAUniqueOperationIdSummaryDescriptionAndTa
 TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {
   int json_body_operations = 0;
   for (const auto& o : operations()) {
-    if (!o.op->contains("requestBody")) continue;
+    if (!o.op->contains("requestBody")) {
+      continue;
+    }
     const json& body = deref((*o.op)["requestBody"]);
-    if (!body["content"].contains("application/json")) continue;
+    if (!body["content"].contains("application/json")) {
+      continue;
+    }
     ++json_body_operations;
     EXPECT_TRUE(body.value("required", false)) << o.path;
     const json& responses = (*o.op)["responses"];
     for (const char* status : {"400", "413", "415", "422", "500"}) {
       ASSERT_TRUE(responses.contains(status)) << o.method << " " << o.path << " lacks " << status;
       const json& response = deref(responses[status]);
-      EXPECT_TRUE(response["content"].contains("application/problem+json")) << o.path << " " << status;
+      EXPECT_TRUE(response["content"].contains("application/problem+json"))
+          << o.path << " " << status;
     }
   }
   EXPECT_EQ(json_body_operations, 2);
@@ -242,25 +273,29 @@ TEST(OpenApiDocument, EveryResponseCarriesXRequestIdAndEveryOperationAcceptsIt) 
     bool takes_request_id = false;
     for (const auto& p : (*o.op)["parameters"]) {
       const json& param = deref(p);
-      takes_request_id = takes_request_id || (param["name"] == "X-Request-Id" && param["in"] == "header" &&
-                                              !param.value("required", false));
+      takes_request_id =
+          takes_request_id || (param["name"] == "X-Request-Id" && param["in"] == "header" &&
+                               !param.value("required", false));
     }
     EXPECT_TRUE(takes_request_id) << o.method << " " << o.path;
     for (const auto& [status, response_ref] : (*o.op)["responses"].items()) {
       const json& response = deref(response_ref);
       ASSERT_TRUE(response.contains("headers")) << o.path << " " << status;
-      EXPECT_TRUE(deref(response["headers"]["X-Request-Id"]).value("required", false)) << o.path << " " << status;
+      EXPECT_TRUE(deref(response["headers"]["X-Request-Id"]).value("required", false))
+          << o.path << " " << status;
     }
   }
 }
 
 TEST(OpenApiDocument, CheckerRejectsWrongTypeMissingRequiredFieldAndExtraField) {
   const json good = entry_length_body();
-  ASSERT_TRUE(contract().check_response("POST", "/v1/entry-length", 200, "application/json", good).empty());
+  ASSERT_TRUE(
+      contract().check_response("POST", "/v1/entry-length", 200, "application/json", good).empty());
 
   json wrong_type = good;
   wrong_type["start"]["x_mm"] = "27.0";
-  auto v = contract().check_response("POST", "/v1/entry-length", 200, "application/json", wrong_type);
+  auto v =
+      contract().check_response("POST", "/v1/entry-length", 200, "application/json", wrong_type);
   EXPECT_TRUE(names_pointer(v, "/start/x_mm")) << join(v);
 
   json missing = good;
@@ -286,15 +321,19 @@ TEST(OpenApiDocument, CheckerRejectsWrongTypeMissingRequiredFieldAndExtraField) 
 
   json end_without_stroke = good;
   end_without_stroke.erase("working_stroke_mm");
-  v = contract().check_response("POST", "/v1/entry-length", 200, "application/json", end_without_stroke);
+  v = contract().check_response("POST", "/v1/entry-length", 200, "application/json",
+                                end_without_stroke);
   EXPECT_FALSE(v.empty()) << "end without working_stroke_mm must be rejected";
 
   json without_exit = good;
   without_exit.erase("working_stroke_mm");
   without_exit.erase("end");
-  EXPECT_TRUE(contract().check_response("POST", "/v1/entry-length", 200, "application/json", without_exit).empty());
+  EXPECT_TRUE(contract()
+                  .check_response("POST", "/v1/entry-length", 200, "application/json", without_exit)
+                  .empty());
 
-  json lateral = json::parse(R"({"spindle_speed_rpm": 1000.0, "feed_per_rev_mm": 0.4, "feed_mm_per_min": 400.0,
+  json lateral =
+      json::parse(R"({"spindle_speed_rpm": 1000.0, "feed_per_rev_mm": 0.4, "feed_mm_per_min": 400.0,
     "entry_feed_mm_per_min": 200.0, "depth_passes_mm": [2.0], "lateral_passes": [{"width_mm": 45.0}],
     "main_time_min": 1, "entry_time_min": 0.5, "steady_time_min": 0.5})");
   v = contract().check_response("POST", "/v1/main-time", 200, "application/json", lateral);
@@ -303,52 +342,69 @@ TEST(OpenApiDocument, CheckerRejectsWrongTypeMissingRequiredFieldAndExtraField) 
 
 TEST(OpenApiDocument, CheckerRejectsUndocumentedPathsOperationsStatusesAndMediaTypes) {
   const json body = entry_length_body();
-  EXPECT_FALSE(contract().check_response("POST", "/v1/entry-lengths", 200, "application/json", body).empty());
-  EXPECT_FALSE(contract().check_response("PUT", "/v1/entry-length", 200, "application/json", body).empty());
-  EXPECT_FALSE(contract().check_response("POST", "/v1/entry-length", 201, "application/json", body).empty());
-  EXPECT_FALSE(contract().check_response("POST", "/v1/entry-length", 200, "text/html", body).empty());
-  EXPECT_FALSE(contract().check_response("POST", "/v1/entry-length", 200, "", body).empty());
-  EXPECT_TRUE(contract().check_response("post", "/v1/entry-length", 200, "application/json; charset=utf-8", body).empty());
-  // A success body is not a problem body, and the other way round.
-  EXPECT_FALSE(contract().check_response("POST", "/v1/entry-length", 200, "application/problem+json", body).empty());
   EXPECT_FALSE(contract()
-                   .check_response("POST", "/v1/entry-length", 422, "application/json",
-                                   problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
-                                           json::array({{{"pointer", "/entry"}, {"detail", "required"}}})))
+                   .check_response("POST", "/v1/entry-lengths", 200, "application/json", body)
                    .empty());
+  EXPECT_FALSE(
+      contract().check_response("PUT", "/v1/entry-length", 200, "application/json", body).empty());
+  EXPECT_FALSE(
+      contract().check_response("POST", "/v1/entry-length", 201, "application/json", body).empty());
+  EXPECT_FALSE(
+      contract().check_response("POST", "/v1/entry-length", 200, "text/html", body).empty());
+  EXPECT_FALSE(contract().check_response("POST", "/v1/entry-length", 200, "", body).empty());
+  EXPECT_TRUE(
+      contract()
+          .check_response("post", "/v1/entry-length", 200, "application/json; charset=utf-8", body)
+          .empty());
+  // A success body is not a problem body, and the other way round.
+  EXPECT_FALSE(
+      contract()
+          .check_response("POST", "/v1/entry-length", 200, "application/problem+json", body)
+          .empty());
+  EXPECT_FALSE(
+      contract()
+          .check_response("POST", "/v1/entry-length", 422, "application/json",
+                          problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
+                                  json::array({{{"pointer", "/entry"}, {"detail", "required"}}})))
+          .empty());
 }
 
 TEST(OpenApiDocument, ProblemSchemasPinTypeTitleAndStatus) {
   const std::string pj = "application/problem+json";
-  const json field_error = json::array({{{"pointer", "/entry/width_mm"}, {"detail", "must be > 0"}}});
+  const json field_error =
+      json::array({{{"pointer", "/entry/width_mm"}, {"detail", "must be > 0"}}});
   const json combination = json::array({{{"pointer", ""}, {"detail", "no contact"}}});
   EXPECT_TRUE(contract()
                   .check_response("POST", "/v1/main-time", 422, pj,
-                                  problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422, field_error))
+                                  problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
+                                          field_error))
                   .empty());
   EXPECT_TRUE(contract()
                   .check_response("POST", "/v1/main-time", 422, pj,
-                                  problem("urn:cutcalc:problem:impossible-input", "Input impossible for the model",
-                                          422, combination))
+                                  problem("urn:cutcalc:problem:impossible-input",
+                                          "Input impossible for the model", 422, combination))
                   .empty());
   // Title of the other 422 type, wrong type for the status, wrong status, no errors, bad pointer.
   EXPECT_FALSE(contract()
                    .check_response("POST", "/v1/main-time", 422, pj,
-                                   problem("urn:cutcalc:problem:invalid-input", "Input impossible for the model", 422,
-                                           field_error))
+                                   problem("urn:cutcalc:problem:invalid-input",
+                                           "Input impossible for the model", 422, field_error))
                    .empty());
   EXPECT_FALSE(contract()
                    .check_response("POST", "/v1/main-time", 422, pj,
-                                   problem("urn:cutcalc:problem:malformed-json", "Malformed JSON", 422, field_error))
+                                   problem("urn:cutcalc:problem:malformed-json", "Malformed JSON",
+                                           422, field_error))
                    .empty());
-  EXPECT_FALSE(contract()
-                   .check_response("POST", "/v1/main-time", 400, pj,
-                                   problem("urn:cutcalc:problem:malformed-json", "Malformed JSON", 422))
-                   .empty());
-  EXPECT_FALSE(contract()
-                   .check_response("POST", "/v1/main-time", 422, pj,
-                                   problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422))
-                   .empty());
+  EXPECT_FALSE(
+      contract()
+          .check_response("POST", "/v1/main-time", 400, pj,
+                          problem("urn:cutcalc:problem:malformed-json", "Malformed JSON", 422))
+          .empty());
+  EXPECT_FALSE(
+      contract()
+          .check_response("POST", "/v1/main-time", 422, pj,
+                          problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422))
+          .empty());
   auto v = contract().check_response(
       "POST", "/v1/main-time", 422, pj,
       problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
@@ -358,7 +414,8 @@ TEST(OpenApiDocument, ProblemSchemasPinTypeTitleAndStatus) {
   no_errors.erase("errors");
   v = contract().check_response("POST", "/v1/main-time", 413, pj, no_errors);
   EXPECT_TRUE(names_pointer(v, "/errors")) << join(v);
-  json with_extension = problem("urn:cutcalc:problem:unsupported-media-type", "Unsupported media type", 415);
+  json with_extension =
+      problem("urn:cutcalc:problem:unsupported-media-type", "Unsupported media type", 415);
   EXPECT_TRUE(contract().check_response("POST", "/v1/main-time", 415, pj, with_extension).empty());
   with_extension["hint"] = "use application/json";
   v = contract().check_response("POST", "/v1/main-time", 415, pj, with_extension);
@@ -373,48 +430,74 @@ TEST(OpenApiDocument, RouteFallbacksCover404And405AndTheirHeaders) {
   const std::string pj = "application/problem+json";
   const json not_found = problem("urn:cutcalc:problem:not-found", "Not found", 404);
   EXPECT_TRUE(contract().check_response("GET", "/v1/nope", 404, pj, not_found).empty());
-  EXPECT_FALSE(contract().check_response("GET", "/v1/nope", 404, pj, problem("urn:cutcalc:problem:internal-error",
-                                                                             "Not found", 404))
+  EXPECT_FALSE(contract()
+                   .check_response("GET", "/v1/nope", 404, pj,
+                                   problem("urn:cutcalc:problem:internal-error", "Not found", 404))
                    .empty());
-  EXPECT_FALSE(contract().check_response("GET", "/v1/nope", 200, "application/json", json::object()).empty());
+  EXPECT_FALSE(contract()
+                   .check_response("GET", "/v1/nope", 200, "application/json", json::object())
+                   .empty());
 
-  const json not_allowed = problem("urn:cutcalc:problem:method-not-allowed", "Method not allowed", 405);
+  const json not_allowed =
+      problem("urn:cutcalc:problem:method-not-allowed", "Method not allowed", 405);
   EXPECT_TRUE(contract().check_response("GET", "/v1/entry-length", 405, pj, not_allowed).empty());
   EXPECT_TRUE(contract().check_response("POST", "/healthz", 405, pj, not_allowed).empty());
-  EXPECT_TRUE(
-      contract().check_response_headers("GET", "/v1/entry-length", 405, {{"allow", "POST"}, {"x-request-id", "a.b-c_1"}})
-          .empty());
-  auto v = contract().check_response_headers("GET", "/v1/entry-length", 405, {{"X-Request-Id", "abc"}});
+  EXPECT_TRUE(contract()
+                  .check_response_headers("GET", "/v1/entry-length", 405,
+                                          {{"allow", "POST"}, {"x-request-id", "a.b-c_1"}})
+                  .empty());
+  auto v =
+      contract().check_response_headers("GET", "/v1/entry-length", 405, {{"X-Request-Id", "abc"}});
   EXPECT_EQ(v.size(), 1U) << join(v);  // Allow is missing
   v = contract().check_response_headers("POST", "/v1/entry-length", 200, {});
   EXPECT_EQ(v.size(), 1U) << join(v);  // X-Request-Id is missing
-  v = contract().check_response_headers("POST", "/v1/entry-length", 200, {{"X-Request-Id", "has space"}});
+  v = contract().check_response_headers("POST", "/v1/entry-length", 200,
+                                        {{"X-Request-Id", "has space"}});
   EXPECT_EQ(v.size(), 1U) << join(v);
-  v = contract().check_response_headers("POST", "/v1/entry-length", 200, {{"X-Request-Id", std::string(129, 'a')}});
+  v = contract().check_response_headers("POST", "/v1/entry-length", 200,
+                                        {{"X-Request-Id", std::string(129, 'a')}});
   EXPECT_EQ(v.size(), 1U) << join(v);
-  EXPECT_TRUE(
-      contract().check_response_headers("POST", "/v1/entry-length", 200, {{"X-Request-Id", std::string(128, 'a')}})
-          .empty());
+  EXPECT_TRUE(contract()
+                  .check_response_headers("POST", "/v1/entry-length", 200,
+                                          {{"X-Request-Id", std::string(128, 'a')}})
+                  .empty());
 }
 
 TEST(OpenApiDocument, OperationalResponsesAreStrict) {
-  EXPECT_TRUE(contract().check_response("GET", "/healthz", 200, "application/json", {{"status", "ok"}}).empty());
-  EXPECT_FALSE(contract().check_response("GET", "/healthz", 200, "application/json", {{"status", "ready"}}).empty());
-  EXPECT_TRUE(contract().check_response("GET", "/readyz", 200, "application/json", {{"status", "ready"}}).empty());
   EXPECT_TRUE(contract()
-                  .check_response("GET", "/readyz", 503, "application/problem+json",
-                                  problem("urn:cutcalc:problem:unavailable", "Service unavailable", 503))
+                  .check_response("GET", "/healthz", 200, "application/json", {{"status", "ok"}})
                   .empty());
-  const json version = {{"name", "cutcalc"}, {"version", "0.1.0"}, {"commit", "unknown"}, {"build_type", "Release"}};
-  EXPECT_TRUE(contract().check_response("GET", "/version", 200, "application/json", version).empty());
+  EXPECT_FALSE(
+      contract()
+          .check_response("GET", "/healthz", 200, "application/json", {{"status", "ready"}})
+          .empty());
+  EXPECT_TRUE(contract()
+                  .check_response("GET", "/readyz", 200, "application/json", {{"status", "ready"}})
+                  .empty());
+  EXPECT_TRUE(
+      contract()
+          .check_response("GET", "/readyz", 503, "application/problem+json",
+                          problem("urn:cutcalc:problem:unavailable", "Service unavailable", 503))
+          .empty());
+  const json version = {
+      {"name", "cutcalc"}, {"version", "0.1.0"}, {"commit", "unknown"}, {"build_type", "Release"}};
+  EXPECT_TRUE(
+      contract().check_response("GET", "/version", 200, "application/json", version).empty());
   json bad_version = version;
   bad_version["commit"] = "not a sha";
-  EXPECT_TRUE(names_pointer(contract().check_response("GET", "/version", 200, "application/json", bad_version),
-                            "/commit"));
+  EXPECT_TRUE(names_pointer(
+      contract().check_response("GET", "/version", 200, "application/json", bad_version),
+      "/commit"));
+  EXPECT_TRUE(contract()
+                  .check_response("GET", "/metrics", 200,
+                                  "text/plain; version=0.0.4; charset=utf-8", "# metrics\n")
+                  .empty());
+  EXPECT_FALSE(
+      contract().check_response("GET", "/metrics", 200, "text/plain", "# metrics\n").empty());
   EXPECT_TRUE(
-      contract().check_response("GET", "/metrics", 200, "text/plain; version=0.0.4; charset=utf-8", "# metrics\n").empty());
-  EXPECT_FALSE(contract().check_response("GET", "/metrics", 200, "text/plain", "# metrics\n").empty());
-  EXPECT_TRUE(contract().check_response("GET", "/openapi.yaml", 200, "application/yaml", "openapi: 3.1.0\n").empty());
+      contract()
+          .check_response("GET", "/openapi.yaml", 200, "application/yaml", "openapi: 3.1.0\n")
+          .empty());
 }
 
 TEST(OpenApiDocument, RequestSchemaEnforcesContourRules) {
@@ -464,7 +547,8 @@ TEST(OpenApiDocument, RequestSchemaEnforcesContourRules) {
   v = contract().check_request("POST", "/v1/entry-length", negative_approach);
   EXPECT_TRUE(names_pointer(v, "/approach_mm")) << join(v);
 
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/entry-length", json::array()), ""));
+  EXPECT_TRUE(
+      names_pointer(contract().check_request("POST", "/v1/entry-length", json::array()), ""));
 }
 
 TEST(OpenApiDocument, RequestSchemaEnforcesMainTimeCombinations) {
@@ -496,9 +580,11 @@ TEST(OpenApiDocument, RequestSchemaEnforcesMainTimeCombinations) {
   factor["entry_feed_factor"] = 1.0;
   EXPECT_TRUE(contract().check_request("POST", "/v1/main-time", factor).empty());
   factor["entry_feed_factor"] = 1.01;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", factor), "/entry_feed_factor"));
+  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", factor),
+                            "/entry_feed_factor"));
   factor["entry_feed_factor"] = 0;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", factor), "/entry_feed_factor"));
+  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", factor),
+                            "/entry_feed_factor"));
 
   json teeth = good;
   teeth["teeth"] = 2.0;
@@ -510,8 +596,9 @@ TEST(OpenApiDocument, RequestSchemaEnforcesMainTimeCombinations) {
 
   json missing_allowance_member = good;
   missing_allowance_member["allowance"].erase("depth_mm");
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", missing_allowance_member),
-                            "/allowance/depth_mm"));
+  EXPECT_TRUE(
+      names_pointer(contract().check_request("POST", "/v1/main-time", missing_allowance_member),
+                    "/allowance/depth_mm"));
 
   json wall_exit = good;
   wall_exit["exit"] = {{"contour", "wall"}, {"width_mm", 80}};
@@ -528,8 +615,8 @@ TEST(OpenApiDocument, RequestSchemaEnforcesMainTimeCombinations) {
 // combination or geometric check) or fails it at the expected pointer.
 TEST(OpenApiDocument, ReferenceCasesSatisfyTheContract) {
   int checked = 0;
-  for (const auto& [file, path] : std::map<std::string, std::string>{{"entry-length.json", "/v1/entry-length"},
-                                                                     {"main-time.json", "/v1/main-time"}}) {
+  for (const auto& [file, path] : std::map<std::string, std::string>{
+           {"entry-length.json", "/v1/entry-length"}, {"main-time.json", "/v1/main-time"}}) {
     std::ifstream in(std::string(CUTCALC_REFERENCE_DIR) + "/" + file);
     ASSERT_TRUE(in) << file;
     const json cases = json::parse(in);
@@ -538,7 +625,8 @@ TEST(OpenApiDocument, ReferenceCasesSatisfyTheContract) {
       const auto request_violations = contract().check_request("POST", path, c["request"]);
       if (c["expect"]["status"] == 200) {
         EXPECT_TRUE(request_violations.empty()) << file << " " << id << join(request_violations);
-        const auto v = contract().check_response("POST", path, 200, "application/json", c["expect"]["body"]);
+        const auto v =
+            contract().check_response("POST", path, 200, "application/json", c["expect"]["body"]);
         EXPECT_TRUE(v.empty()) << file << " " << id << join(v);
       } else {
         const std::string pointer = c["expect"]["pointer"].get<std::string>();

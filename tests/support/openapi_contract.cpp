@@ -38,17 +38,27 @@ std::string_view strip_plus(std::string_view s) {
 json integer_scalar(std::string_view text, int base) {
   std::int64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value, base);
-  if (ec == std::errc() && end == text.data() + text.size()) return value;
+  if (ec == std::errc() && end == text.data() + text.size()) {
+    return value;
+  }
   double d = 0;  // out of range for int64: keep it as a number anyway
   std::from_chars(text.data(), text.data() + text.size(), d);
   return d;
 }
 
 json plain_scalar(const std::string& s) {
-  if (s.empty() || s == "~" || s == "null" || s == "Null" || s == "NULL") return nullptr;
-  if (s == "true" || s == "True" || s == "TRUE") return true;
-  if (s == "false" || s == "False" || s == "FALSE") return false;
-  if (std::regex_match(s, int_re())) return integer_scalar(strip_plus(s), 10);
+  if (s.empty() || s == "~" || s == "null" || s == "Null" || s == "NULL") {
+    return nullptr;
+  }
+  if (s == "true" || s == "True" || s == "TRUE") {
+    return true;
+  }
+  if (s == "false" || s == "False" || s == "FALSE") {
+    return false;
+  }
+  if (std::regex_match(s, int_re())) {
+    return integer_scalar(strip_plus(s), 10);
+  }
   if (s.size() > 2 && s[0] == '0' && s[1] == 'o' &&
       s.find_first_not_of("01234567", 2) == std::string::npos) {
     return integer_scalar(std::string_view(s).substr(2), 8);
@@ -66,8 +76,12 @@ json plain_scalar(const std::string& s) {
   if (s == ".inf" || s == ".Inf" || s == ".INF" || s == "+.inf" || s == "+.Inf" || s == "+.INF") {
     return HUGE_VAL;
   }
-  if (s == "-.inf" || s == "-.Inf" || s == "-.INF") return -HUGE_VAL;
-  if (s == ".nan" || s == ".NaN" || s == ".NAN") return std::nan("");
+  if (s == "-.inf" || s == "-.Inf" || s == "-.INF") {
+    return -HUGE_VAL;
+  }
+  if (s == ".nan" || s == ".NaN" || s == ".NAN") {
+    return std::nan("");
+  }
   return s;
 }
 
@@ -77,26 +91,32 @@ json yaml_to_json(const YAML::Node& node, const std::string& where) {
       return nullptr;
     case YAML::NodeType::Scalar: {
       const std::string& tag = node.Tag();
-      if (tag == "!" || tag == "tag:yaml.org,2002:str")
+      if (tag == "!" || tag == "tag:yaml.org,2002:str") {
         return node.Scalar();  // quoted or block scalar
+      }
       return plain_scalar(node.Scalar());
     }
     case YAML::NodeType::Sequence: {
       json out = json::array();
       std::size_t i = 0;
-      for (const auto& item : node)
+      for (const auto& item : node) {
         out.push_back(yaml_to_json(item, where + "/" + std::to_string(i++)));
+      }
       return out;
     }
     case YAML::NodeType::Map: {
       json out = json::object();
       for (const auto& kv : node) {
-        if (!kv.first.IsScalar())
+        if (!kv.first.IsScalar()) {
           throw std::runtime_error("openapi: non-scalar mapping key at " + where);
+        }
         const std::string key = kv.first.Scalar();
-        if (out.contains(key))
-          throw std::runtime_error("openapi: duplicate key '" + key + "' at " + where);
-        out[key] = yaml_to_json(kv.second, where + "/" + key);
+        if (out.contains(key)) {
+          std::string message = "openapi: duplicate key '";
+          message.append(key).append("' at ").append(where);
+          throw std::runtime_error(message);
+        }
+        out[key] = yaml_to_json(kv.second, std::string(where).append("/").append(key));
       }
       return out;
     }
@@ -117,7 +137,9 @@ std::string lower(std::string s) {
 
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return "";
+  if (b == std::string::npos) {
+    return "";
+  }
   const auto e = s.find_last_not_of(" \t");
   return s.substr(b, e - b + 1);
 }
@@ -167,15 +189,31 @@ std::string type_name(const json& v) {
 }
 
 bool matches_type(const std::string& type, const json& v) {
-  if (type == "null") return v.is_null();
-  if (type == "boolean") return v.is_boolean();
-  if (type == "object") return v.is_object();
-  if (type == "array") return v.is_array();
-  if (type == "string") return v.is_string();
-  if (type == "number") return v.is_number();
+  if (type == "null") {
+    return v.is_null();
+  }
+  if (type == "boolean") {
+    return v.is_boolean();
+  }
+  if (type == "object") {
+    return v.is_object();
+  }
+  if (type == "array") {
+    return v.is_array();
+  }
+  if (type == "string") {
+    return v.is_string();
+  }
+  if (type == "number") {
+    return v.is_number();
+  }
   if (type == "integer") {
-    if (v.is_number_integer()) return true;  // also covers unsigned
-    if (!v.is_number_float()) return false;
+    if (v.is_number_integer()) {
+      return true;  // also covers unsigned
+    }
+    if (!v.is_number_float()) {
+      return false;
+    }
     const double d = v.get<double>();
     return std::isfinite(d) && std::trunc(d) == d;
   }
@@ -185,19 +223,26 @@ bool matches_type(const std::string& type, const json& v) {
 std::size_t utf8_length(const std::string& s) {
   std::size_t n = 0;
   for (const char c : s) {
-    if ((static_cast<unsigned char>(c) & 0xC0U) != 0x80U) ++n;
+    if ((static_cast<unsigned char>(c) & 0xC0U) != 0x80U) {
+      ++n;
+    }
   }
   return n;
 }
 
 std::string schema_label(const json& schema, std::size_t index) {
   if (schema.is_object()) {
-    if (schema.contains("title") && schema["title"].is_string())
+    if (schema.contains("title") && schema["title"].is_string()) {
       return "\"" + schema["title"].get<std::string>() + "\"";
-    if (schema.contains("$ref") && schema["$ref"].is_string())
+    }
+    if (schema.contains("$ref") && schema["$ref"].is_string()) {
       return schema["$ref"].get<std::string>();
+    }
   }
-  return "#" + std::to_string(index);
+  // Appending instead of operator+("#", ...) avoids GCC 12's false -Wrestrict at -O3 (bug 105329).
+  std::string label = "#";
+  label += std::to_string(index);
+  return label;
 }
 
 // Keywords the validator evaluates, and annotations it may ignore. Anything else in a schema is an
@@ -244,18 +289,22 @@ class Validator {
   explicit Validator(const json& doc) : doc_(doc) {}
 
   const json& resolve(const std::string& ref) const {
-    if (ref.empty() || ref[0] != '#')
+    if (ref.empty() || ref[0] != '#') {
       throw std::runtime_error("openapi: only local $ref is supported: " + ref);
+    }
     const json::json_pointer ptr(ref.substr(1));
-    if (!doc_.contains(ptr)) throw std::runtime_error("openapi: $ref does not resolve: " + ref);
+    if (!doc_.contains(ptr)) {
+      throw std::runtime_error("openapi: $ref does not resolve: " + ref);
+    }
     return doc_.at(ptr);
   }
 
   // Follows $ref chains of OpenAPI objects (responses, headers, parameters, request bodies).
   const json& deref(const json& obj) const {
     const json* cur = &obj;
-    for (int i = 0; i < 16 && cur->is_object() && cur->contains("$ref"); ++i)
+    for (int i = 0; i < 16 && cur->is_object() && cur->contains("$ref"); ++i) {
       cur = &resolve((*cur)["$ref"].get<std::string>());
+    }
     return *cur;
   }
 
@@ -266,15 +315,18 @@ class Validator {
       return;
     }
     if (schema.is_boolean()) {
-      if (!schema.get<bool>()) add(out, ptr, "no value is allowed here (schema false)");
+      if (!schema.get<bool>()) {
+        add(out, ptr, "no value is allowed here (schema false)");
+      }
       return;
     }
     if (!schema.is_object()) {
       add(out, ptr, "schema is neither an object nor a boolean");
       return;
     }
-    if (schema.contains("$ref"))
+    if (schema.contains("$ref")) {
       validate(resolve(schema["$ref"].get<std::string>()), v, ptr, out, depth + 1);
+    }
 
     if (schema.contains("type")) {
       const json& t = schema["type"];
@@ -282,7 +334,9 @@ class Validator {
       if (t.is_string()) {
         ok = matches_type(t.get<std::string>(), v);
       } else {
-        for (const auto& one : t) ok = ok || matches_type(one.get<std::string>(), v);
+        for (const auto& one : t) {
+          ok = ok || matches_type(one.get<std::string>(), v);
+        }
       }
       if (!ok) {
         add(out, ptr,
@@ -293,16 +347,25 @@ class Validator {
     }
     if (schema.contains("enum")) {
       const json& e = schema["enum"];
-      if (std::find(e.begin(), e.end(), v) == e.end())
+      if (std::find(e.begin(), e.end(), v) == e.end()) {
         add(out, ptr, "must be one of " + e.dump() + ", got " + v.dump());
+      }
     }
     if (schema.contains("const") && v != schema["const"]) {
       add(out, ptr, "must be " + schema["const"].dump() + ", got " + v.dump());
     }
-    if (v.is_number()) check_number(schema, v, ptr, out);
-    if (v.is_string()) check_string(schema, v, ptr, out);
-    if (v.is_array()) check_array(schema, v, ptr, out, depth);
-    if (v.is_object()) check_object(schema, v, ptr, out, depth);
+    if (v.is_number()) {
+      check_number(schema, v, ptr, out);
+    }
+    if (v.is_string()) {
+      check_string(schema, v, ptr, out);
+    }
+    if (v.is_array()) {
+      check_array(schema, v, ptr, out, depth);
+    }
+    if (v.is_object()) {
+      check_object(schema, v, ptr, out, depth);
+    }
     check_composition(schema, v, ptr, out, depth);
   }
 
@@ -310,7 +373,9 @@ class Validator {
   static void check_number(const json& schema, const json& v, const std::string& ptr,
                            std::vector<std::string>& out) {
     const double d = v.get<double>();
-    if (!std::isfinite(d)) add(out, ptr, "must be a finite number");
+    if (!std::isfinite(d)) {
+      add(out, ptr, "must be a finite number");
+    }
     if (schema.contains("minimum") && !(d >= schema["minimum"].get<double>())) {
       add(out, ptr, "must be >= " + schema["minimum"].dump() + " (minimum), got " + v.dump());
     }
@@ -364,8 +429,9 @@ class Validator {
               std::to_string(v.size()));
     }
     if (schema.contains("items")) {
-      for (std::size_t i = 0; i < v.size(); ++i)
+      for (std::size_t i = 0; i < v.size(); ++i) {
         validate(schema["items"], v[i], child(ptr, std::to_string(i)), out, depth + 1);
+      }
     }
   }
 
@@ -398,18 +464,24 @@ class Validator {
     }
     if (schema.contains("dependentRequired")) {
       for (const auto& [key, deps] : schema["dependentRequired"].items()) {
-        if (!v.contains(key)) continue;
+        if (!v.contains(key)) {
+          continue;
+        }
         for (const auto& dep : deps) {
           const std::string d = dep.get<std::string>();
-          if (!v.contains(d))
-            add(out, ptr,
-                "property \"" + key + "\" requires property \"" + d + "\" (dependentRequired)");
+          if (!v.contains(d)) {
+            std::string message = "property \"";
+            message.append(key).append("\" requires property \"").append(d);
+            add(out, ptr, message.append("\" (dependentRequired)"));
+          }
         }
       }
     }
     if (schema.contains("dependentSchemas")) {
       for (const auto& [key, sub] : schema["dependentSchemas"].items()) {
-        if (v.contains(key)) validate(sub, v, ptr, out, depth + 1);
+        if (v.contains(key)) {
+          validate(sub, v, ptr, out, depth + 1);
+        }
       }
     }
   }
@@ -417,10 +489,14 @@ class Validator {
   // The branch of a failed oneOf selected by its discriminator, or nullptr.
   const json* discriminated_branch(const json& schema, const json& v, const std::string& ptr,
                                    std::vector<std::string>& out) const {
-    if (!schema.contains("discriminator") || !v.is_object()) return nullptr;
+    if (!schema.contains("discriminator") || !v.is_object()) {
+      return nullptr;
+    }
     const json& disc = schema["discriminator"];
     const std::string prop = disc.value("propertyName", "");
-    if (prop.empty()) return nullptr;
+    if (prop.empty()) {
+      return nullptr;
+    }
     if (!v.contains(prop)) {
       add(out, ptr,
           "missing required property \"" + prop + "\" (the discriminator; expected at \"" +
@@ -436,14 +512,18 @@ class Validator {
     if (target.empty()) {
       json allowed = json::array();
       if (disc.contains("mapping")) {
-        for (const auto& [k, unused] : disc["mapping"].items()) allowed.push_back(k);
+        for (const auto& [k, unused] : disc["mapping"].items()) {
+          allowed.push_back(k);
+        }
       }
       add(out, child(ptr, prop),
           "must be one of " + allowed.dump() + " (discriminator), got " + value.dump());
       return &schema;
     }
     for (const auto& branch : schema["oneOf"]) {
-      if (branch.is_object() && branch.value("$ref", "") == target) return &branch;
+      if (branch.is_object() && branch.value("$ref", "") == target) {
+        return &branch;
+      }
     }
     return nullptr;
   }
@@ -451,7 +531,9 @@ class Validator {
   void check_composition(const json& schema, const json& v, const std::string& ptr,
                          std::vector<std::string>& out, int depth) const {
     if (schema.contains("allOf")) {
-      for (const auto& sub : schema["allOf"]) validate(sub, v, ptr, out, depth + 1);
+      for (const auto& sub : schema["allOf"]) {
+        validate(sub, v, ptr, out, depth + 1);
+      }
     }
     if (schema.contains("anyOf")) {
       std::vector<std::string> closest;
@@ -495,7 +577,9 @@ class Validator {
       }
       if (matched.size() > 1) {
         std::string names;
-        for (const auto& m : matched) names += (names.empty() ? "" : ", ") + m;
+        for (const auto& m : matched) {
+          names += (names.empty() ? "" : ", ") + m;
+        }
         add(out, ptr,
             "must match exactly one schema of oneOf, matches " + std::to_string(matched.size()) +
                 ": " + names);
@@ -520,8 +604,9 @@ class Validator {
       if (errs.empty()) {
         const json& n = schema["not"];
         std::string what = schema_label(n, 0);
-        if (n.is_object() && n.contains("description"))
+        if (n.is_object() && n.contains("description")) {
           what += " (" + n["description"].get<std::string>() + ")";
+        }
         add(out, ptr, "must not match the schema in not: " + what);
       }
     }
@@ -535,16 +620,21 @@ class Validator {
 
 void check_schema_keywords(const json& schema, const std::string& where, const Validator& validator,
                            std::vector<std::string>& problems) {
-  if (schema.is_boolean()) return;
+  if (schema.is_boolean()) {
+    return;
+  }
   if (!schema.is_object()) {
     problems.push_back(where + ": a schema must be an object or a boolean");
     return;
   }
   for (const auto& [key, value] : schema.items()) {
     const std::string at = where + "/" + escape_token(key);
-    if (key.rfind("x-", 0) == 0 || annotation_keywords().count(key) != 0) continue;
+    if (key.rfind("x-", 0) == 0 || annotation_keywords().count(key) != 0) {
+      continue;
+    }
     if (validation_keywords().count(key) == 0) {
-      problems.push_back(at + ": unsupported schema keyword '" + key + "'");
+      problems.push_back(
+          std::string(at).append(": unsupported schema keyword '").append(key).append("'"));
       continue;
     }
     if (key == "$ref") {
@@ -554,8 +644,9 @@ void check_schema_keywords(const json& schema, const std::string& where, const V
         problems.push_back(at + ": " + e.what());
       }
     } else if (key == "properties" || key == "dependentSchemas") {
-      for (const auto& [name, sub] : value.items())
+      for (const auto& [name, sub] : value.items()) {
         check_schema_keywords(sub, at + "/" + escape_token(name), validator, problems);
+      }
     } else if (key == "items") {
       if (value.is_array()) {
         problems.push_back(at + ": the array form of items is not supported");
@@ -566,8 +657,9 @@ void check_schema_keywords(const json& schema, const std::string& where, const V
       check_schema_keywords(value, at, validator, problems);
     } else if (key == "allOf" || key == "anyOf" || key == "oneOf") {
       std::size_t i = 0;
-      for (const auto& sub : value)
+      for (const auto& sub : value) {
         check_schema_keywords(sub, at + "/" + std::to_string(i++), validator, problems);
+      }
     }
   }
 }
@@ -577,19 +669,25 @@ void check_document(const json& node, const std::string& where, const Validator&
                     std::vector<std::string>& problems) {
   if (node.is_array()) {
     std::size_t i = 0;
-    for (const auto& item : node)
+    for (const auto& item : node) {
       check_document(item, where + "/" + std::to_string(i++), validator, problems);
+    }
     return;
   }
-  if (!node.is_object()) return;
+  if (!node.is_object()) {
+    return;
+  }
   for (const auto& [key, value] : node.items()) {
     const std::string at = where + "/" + escape_token(key);
-    if (key == "example" || key == "examples") continue;  // example values are data, not document
+    if (key == "example" || key == "examples") {
+      continue;  // example values are data, not document
+    }
     if (key == "schema") {
       check_schema_keywords(value, at, validator, problems);
     } else if (key == "schemas" && where == "/components") {
-      for (const auto& [name, sub] : value.items())
+      for (const auto& [name, sub] : value.items()) {
         check_schema_keywords(sub, at + "/" + escape_token(name), validator, problems);
+      }
     } else if (key == "$ref" && value.is_string()) {
       try {
         validator.resolve(value.get<std::string>());
@@ -620,19 +718,26 @@ MediaType parse_media_type(const std::string& text) {
         trim(text.substr(pos + 1, next == std::string::npos ? std::string::npos : next - pos - 1));
     pos = next;
     const std::size_t eq = part.find('=');
-    if (part.empty() || eq == std::string::npos) continue;
+    if (part.empty() || eq == std::string::npos) {
+      continue;
+    }
     const std::string name = lower(trim(part.substr(0, eq)));
     std::string value = trim(part.substr(eq + 1));
-    if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+    if (value.size() >= 2 && value.front() == '"' && value.back() == '"') {
       value = value.substr(1, value.size() - 2);
-    if (name == "charset") value = lower(value);
+    }
+    if (name == "charset") {
+      value = lower(value);
+    }
     m.params[name] = value;
   }
   return m;
 }
 
 bool essence_matches(const std::string& documented, const std::string& actual) {
-  if (documented == actual || documented == "*/*") return true;
+  if (documented == actual || documented == "*/*") {
+    return true;
+  }
   if (documented.size() > 2 && documented.compare(documented.size() - 2, 2, "/*") == 0) {
     return actual.compare(0, documented.size() - 1, documented, 0, documented.size() - 1) == 0;
   }
@@ -646,13 +751,17 @@ const json* match_media_type(const json& content, const std::string& content_typ
   int best_score = -1;
   for (const auto& [key, media] : content.items()) {
     const MediaType doc = parse_media_type(key);
-    if (!essence_matches(doc.essence, actual.essence)) continue;
+    if (!essence_matches(doc.essence, actual.essence)) {
+      continue;
+    }
     bool params_ok = true;
     for (const auto& [name, value] : doc.params) {
       const auto it = actual.params.find(name);
       params_ok = params_ok && it != actual.params.end() && it->second == value;
     }
-    if (!params_ok) continue;
+    if (!params_ok) {
+      continue;
+    }
     const int score = (doc.essence == actual.essence ? 1000 : (doc.essence == "*/*" ? 0 : 500)) +
                       static_cast<int>(doc.params.size());
     if (score > best_score) {
@@ -665,7 +774,9 @@ const json* match_media_type(const json& content, const std::string& content_typ
 
 std::string documented_keys(const json& obj) {
   std::string keys;
-  for (const auto& [key, unused] : obj.items()) keys += (keys.empty() ? "" : ", ") + key;
+  for (const auto& [key, unused] : obj.items()) {
+    keys += (keys.empty() ? "" : ", ") + key;
+  }
   return keys;
 }
 
@@ -697,7 +808,9 @@ OpenApiContract OpenApiContract::load(const std::string& path) {
   check_document(doc, "", validator, problems);
   if (!problems.empty()) {
     std::string message = "openapi: " + path + " uses what the contract checker does not support:";
-    for (const auto& p : problems) message += "\n  " + p;
+    for (const auto& p : problems) {
+      message += "\n  " + p;
+    }
     throw std::runtime_error(message);
   }
   return OpenApiContract(std::move(doc));
@@ -736,7 +849,9 @@ const nlohmann::json* OpenApiContract::find_response(const std::string& method,
   const nlohmann::json& responses = item[m]["responses"];
   for (const std::string& key :
        {std::to_string(status), std::to_string(status / 100) + "XX", std::string("default")}) {
-    if (responses.contains(key)) return &validator.deref(responses[key]);
+    if (responses.contains(key)) {
+      return &validator.deref(responses[key]);
+    }
   }
   violations.push_back(what + ": status " + std::to_string(status) +
                        " is not documented (documented: " + documented_keys(responses) + ")");
@@ -749,10 +864,14 @@ std::vector<std::string> OpenApiContract::check_response(const std::string& meth
                                                          const nlohmann::json& body) const {
   std::vector<std::string> violations;
   const nlohmann::json* response = find_response(method, path, status, violations);
-  if (response == nullptr) return violations;
+  if (response == nullptr) {
+    return violations;
+  }
   const std::string what = method + " " + path + " " + std::to_string(status);
   if (!response->contains("content") || (*response)["content"].empty()) {
-    if (!body.is_null()) violations.push_back(what + ": the response is documented without a body");
+    if (!body.is_null()) {
+      violations.push_back(what + ": the response is documented without a body");
+    }
     return violations;
   }
   const nlohmann::json& content = (*response)["content"];
@@ -766,8 +885,9 @@ std::vector<std::string> OpenApiContract::check_response(const std::string& meth
                          "\" is not documented (documented: " + documented_keys(content) + ")");
     return violations;
   }
-  if (media->contains("schema"))
+  if (media->contains("schema")) {
     Validator(document_).validate((*media)["schema"], body, "", violations);
+  }
   return violations;
 }
 
@@ -785,7 +905,9 @@ std::vector<std::string> OpenApiContract::check_request(const std::string& metho
   const Validator validator(document_);
   const nlohmann::json& op = paths[path][m];
   if (!op.contains("requestBody")) {
-    if (!body.is_null()) violations.push_back(what + ": the operation takes no request body");
+    if (!body.is_null()) {
+      violations.push_back(what + ": the operation takes no request body");
+    }
     return violations;
   }
   const nlohmann::json& request_body = validator.deref(op["requestBody"]);
@@ -796,7 +918,9 @@ std::vector<std::string> OpenApiContract::check_request(const std::string& metho
     violations.push_back(what + ": no application/json request body is documented");
     return violations;
   }
-  if (media->contains("schema")) validator.validate((*media)["schema"], body, "", violations);
+  if (media->contains("schema")) {
+    validator.validate((*media)["schema"], body, "", violations);
+  }
   return violations;
 }
 
@@ -805,22 +929,31 @@ std::vector<std::string> OpenApiContract::check_response_headers(
     const std::map<std::string, std::string>& headers) const {
   std::vector<std::string> violations;
   const nlohmann::json* response = find_response(method, path, status, violations);
-  if (response == nullptr || !response->contains("headers")) return violations;
+  if (response == nullptr || !response->contains("headers")) {
+    return violations;
+  }
   const Validator validator(document_);
   std::map<std::string, std::string> by_lower_name;
-  for (const auto& [name, value] : headers) by_lower_name.emplace(lower(name), value);
+  for (const auto& [name, value] : headers) {
+    by_lower_name.emplace(lower(name), value);
+  }
   for (const auto& [name, header_ref] : (*response)["headers"].items()) {
     const nlohmann::json& header = validator.deref(header_ref);
     const auto it = by_lower_name.find(lower(name));
     if (it == by_lower_name.end()) {
-      if (header.value("required", false))
+      if (header.value("required", false)) {
         violations.push_back("header " + name + ": required but missing");
+      }
       continue;
     }
-    if (!header.contains("schema")) continue;
+    if (!header.contains("schema")) {
+      continue;
+    }
     std::vector<std::string> errs;
     validator.validate(header["schema"], nlohmann::json(it->second), "", errs);
-    for (const auto& e : errs) violations.push_back("header " + name + ": " + e);
+    for (const auto& e : errs) {
+      violations.push_back(std::string("header ").append(name).append(": ").append(e));
+    }
   }
   return violations;
 }

@@ -1,0 +1,38 @@
+// E24-E25 of spec entry-and-main-time.md.
+
+#include "domain/entry/passes.h"
+
+#include <cmath>
+#include <string>
+
+namespace cutcalc::domain::entry::detail {
+
+namespace {
+
+// E24: a quotient that should be an integer may round just above it; without the guard 6/2 could
+// become 4 passes (inferred in the spec).
+constexpr double kCeilGuard = 1e-9;
+
+}  // namespace
+
+// E24
+Result<std::size_t> pass_count(double allowance_mm, double cut_mm, const char* what) {
+  const double count = std::ceil(allowance_mm / cut_mm - kCeilGuard);  // N
+  // Written so that a NaN or an infinite quotient also fails before the integer conversion.
+  if (!(count <= static_cast<double>(kMaxPassCount))) {
+    return make_error(ErrorCode::too_many_passes,
+                      std::string("too many ") + what + " passes: at most " +
+                          std::to_string(kMaxPassCount) + " are computed");
+  }
+  // A quotient below the guard (allowance far thinner than a cut) still needs one pass.
+  return count < 1.0 ? std::size_t{1} : static_cast<std::size_t>(count);
+}
+
+// E25 (not the paper's H - t floor(H/t), which is 0 when H/t is an integer)
+std::vector<double> pass_sizes(std::size_t count, double allowance_mm, double cut_mm) {
+  std::vector<double> sizes(count, cut_mm);
+  sizes.back() = allowance_mm - static_cast<double>(count - 1) * cut_mm;
+  return sizes;
+}
+
+}  // namespace cutcalc::domain::entry::detail

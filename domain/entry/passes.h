@@ -1,0 +1,21 @@
+#pragma once
+// Numbers and sizes of the lateral and depth passes (E24, E25). Private to domain/entry.
+
+#include <cstddef>
+#include <vector>
+
+#include "domain/common/result.h"
+
+namespace cutcalc::domain::entry::detail {
+
+// A service guard, not part of the model: each pass becomes an element of the response, so an
+// allowance divided into millions of cuts is refused instead of filling memory.
+inline constexpr std::size_t kMaxPassCount = 10000;
+
+// E24: N = ceil(allowance / cut - 1e-9), at least 1. Error: too_many_passes above kMaxPassCount.
+Result<std::size_t> pass_count(double allowance_mm, double cut_mm, const char* what);
+
+// E25: N - 1 full cuts, then the remainder allowance - (N - 1) cut.
+std::vector<double> pass_sizes(std::size_t count, double allowance_mm, double cut_mm);
+
+}  // namespace cutcalc::domain::entry::detail
