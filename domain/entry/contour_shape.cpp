@@ -23,7 +23,8 @@ double notch_depth_mm(double radius_mm, double half_width, double y_mm) {
   const double y_abs = std::abs(y_mm);
   const double numerator = (half_width - y_abs) * (half_width + y_abs);
   const double denominator = sqrt_diff_sq(radius_mm, y_mm) + sqrt_diff_sq(radius_mm, half_width);
-  // Both roots vanish only at a corner of a half-circle notch (h = R, |y| = h), where the depth is 0.
+  // Both roots vanish only at a corner of a half-circle notch (h = R, |y| = h), where the depth is
+  // 0.
   return denominator > 0.0 ? numerator / denominator : 0.0;
 }
 

@@ -27,7 +27,8 @@ BandPoint workpiece_edge(double y_mm, double axis_y_mm, double cutter_radius_mm)
   return BandPoint{y_mm, u, sqrt_diff_sq(cutter_radius_mm, u)};
 }
 
-// Strictly inside (a, b): a stationary point on an end is already evaluated there, with its exact u.
+// Strictly inside (a, b): a stationary point on an end is already evaluated there, with its exact
+// u.
 bool inside(const Band& band, double u_mm) {
   return band.lower.u_mm < u_mm && u_mm < band.upper.u_mm;
 }
@@ -115,7 +116,8 @@ std::optional<Band> steady_band(const LateralSetting& setting) {
 }
 
 // E10, E12
-EntryExtremes entry_extremes(const Contour& contour, const LateralSetting& setting, const Band& band) {
+EntryExtremes entry_extremes(const Contour& contour, const LateralSetting& setting,
+                             const Band& band) {
   const double at_a = psi_mm(contour, band.lower);
   const double at_b = psi_mm(contour, band.upper);
   Extremes psi{std::min(at_a, at_b), std::max(at_a, at_b)};
@@ -150,7 +152,8 @@ double exit_end_x_mm(const Contour& contour, const LateralSetting& setting, cons
   double x_end = std::max(phi_mm(contour, band.lower), phi_mm(contour, band.upper));  // max phi
   if (contour.kind == ContourKind::convex_arc) {
     // E19: phi is not convex; the disc touching the arc's circle from inside is a candidate.
-    if (const auto value = inner_tangency_value(contour.radius_mm, setting, band, contour.radius_mm)) {
+    if (const auto value =
+            inner_tangency_value(contour.radius_mm, setting, band, contour.radius_mm)) {
       x_end = std::max(x_end, *value);
     }
   }

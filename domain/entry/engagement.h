@@ -27,10 +27,10 @@ struct Band {
 // in that contour's internal frame. Usually the edges are -h and h; a later lateral pass of an arc
 // starts at its strip's edge instead (section 7.2).
 struct LateralSetting {
-  double axis_y_mm = 0.0;        // K
+  double axis_y_mm = 0.0;         // K
   double cutter_radius_mm = 0.0;  // r
-  double lower_edge_mm = 0.0;    // -h, or the strip's edge
-  double upper_edge_mm = 0.0;    // h
+  double lower_edge_mm = 0.0;     // -h, or the strip's edge
+  double upper_edge_mm = 0.0;     // h
 };
 
 // E2: the band, or nothing when W <= 0 (tangency included), compared exactly as section 8 says.
@@ -41,7 +41,8 @@ struct EntryExtremes {
   double first_contact_mm = 0.0;  // xc0
   double saturation_mm = 0.0;     // xcs
 };
-EntryExtremes entry_extremes(const Contour& contour, const LateralSetting& setting, const Band& band);
+EntryExtremes entry_extremes(const Contour& contour, const LateralSetting& setting,
+                             const Band& band);
 
 // E11: x_end = max phi over the band. Not for a wall exit (E22).
 double exit_end_x_mm(const Contour& contour, const LateralSetting& setting, const Band& band);

@@ -13,7 +13,8 @@ namespace cutcalc::domain::entry {
 namespace {
 
 // The whole part is the workpiece: the band is limited by the contour's own edges +-h (E2, E3).
-detail::PassSide whole_part_side(const Contour& contour, double offset_mm, double cutter_radius_mm) {
+detail::PassSide whole_part_side(const Contour& contour, double offset_mm,
+                                 double cutter_radius_mm) {
   const double h = detail::half_width_mm(contour);  // h
   return detail::PassSide{contour, detail::LateralSetting{offset_mm, cutter_radius_mm, -h, h}};
 }
@@ -21,12 +22,12 @@ detail::PassSide whole_part_side(const Contour& contour, double offset_mm, doubl
 // Huge inputs can overflow (e.g. cot(alpha) of a nearly flat edge times B); no response may
 // carry an infinity.
 bool all_finite(const EntryLengthResult& result) {
-  bool finite = std::isfinite(result.engagement_length_mm) && std::isfinite(result.entry_length_mm) &&
-                std::isfinite(result.start.x_mm) && std::isfinite(result.start.y_mm) &&
-                std::isfinite(result.steady_width_mm);
+  bool finite = std::isfinite(result.engagement_length_mm) &&
+                std::isfinite(result.entry_length_mm) && std::isfinite(result.start.x_mm) &&
+                std::isfinite(result.start.y_mm) && std::isfinite(result.steady_width_mm);
   if (result.exit) {
-    finite = finite && std::isfinite(result.exit->end.x_mm) && std::isfinite(result.exit->end.y_mm) &&
-             std::isfinite(result.exit->working_stroke_mm);
+    finite = finite && std::isfinite(result.exit->end.x_mm) &&
+             std::isfinite(result.exit->end.y_mm) && std::isfinite(result.exit->working_stroke_mm);
   }
   return finite;
 }
@@ -52,8 +53,9 @@ Result<EntryLengthResult> compute_entry_length(const EntryLengthParams& params) 
   plan.entry = whole_part_side(params.entry, K, r);
   if (params.exit) {
     // Entry and exit share the symmetry line (section 3), so the axis keeps its offset K.
-    plan.exit = detail::PassExit{whole_part_side(params.exit->contour, K, r), params.exit->length_mm,
-                                 params.exit->extra_path_mm, params.exit->overrun_mm};
+    plan.exit =
+        detail::PassExit{whole_part_side(params.exit->contour, K, r), params.exit->length_mm,
+                         params.exit->extra_path_mm, params.exit->overrun_mm};
   }
 
   Result<detail::PassGeometry> pass = detail::solve_pass(plan);

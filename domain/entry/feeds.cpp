@@ -23,11 +23,11 @@ double spindle_speed_rpm(const MainTimeParams& params) {
 Result<Feeds> compute_feeds(const MainTimeParams& params) {
   const double z = static_cast<double>(params.teeth);  // z
   Feeds feeds;
-  feeds.spindle_speed_rpm = spindle_speed_rpm(params);                           // n (E30)
-  feeds.feed_per_rev_mm = params.feed_per_tooth_mm * z;                          // S_o (E31)
-  feeds.feed_mm_per_min = feeds.spindle_speed_rpm * feeds.feed_per_rev_mm;       // S_m2 (E32)
+  feeds.spindle_speed_rpm = spindle_speed_rpm(params);                      // n (E30)
+  feeds.feed_per_rev_mm = params.feed_per_tooth_mm * z;                     // S_o (E31)
+  feeds.feed_mm_per_min = feeds.spindle_speed_rpm * feeds.feed_per_rev_mm;  // S_m2 (E32)
   if (const auto* factor = std::get_if<EntryFeedFactor>(&params.entry_feed)) {
-    feeds.entry_feed_mm_per_min = factor->factor * feeds.feed_mm_per_min;        // S_m1 (E33)
+    feeds.entry_feed_mm_per_min = factor->factor * feeds.feed_mm_per_min;  // S_m1 (E33)
     return feeds;
   }
   const double S_z1 = std::get<EntryFeedPerTooth>(params.entry_feed).mm;  // S_z1

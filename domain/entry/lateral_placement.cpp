@@ -58,12 +58,12 @@ std::vector<LateralFrame> place_lateral_passes(std::size_t count, double part_wi
   for (std::size_t i = 1; i <= count; ++i) {
     LateralFrame frame;
     frame.lower_boundary_mm = static_cast<double>(i - 1) * t;  // Y_(i-1) (E27)
-    frame.strip_width_mm = B - frame.lower_boundary_mm;         // B_i
+    frame.strip_width_mm = B - frame.lower_boundary_mm;        // B_i
     const double strip_centre = (frame.lower_boundary_mm + B) / 2.0;
     if (i < count) {
       // E27: the cutter's +Y edge on the boundary Y_i, so that it cuts exactly [Y_(i-1), Y_i].
-      const double Y_i = static_cast<double>(i) * t;  // Y_i
-      frame.axis_y_mm = Y_i - r;                      // Y_ax,i
+      const double Y_i = static_cast<double>(i) * t;     // Y_i
+      frame.axis_y_mm = Y_i - r;                         // Y_ax,i
       frame.offset_mm = frame.axis_y_mm - strip_centre;  // K_i (E28)
     } else {
       frame.axis_y_mm = strip_centre;  // Y_ax,N1: centre of the remaining strip
@@ -82,8 +82,8 @@ PassPlan plan_lateral_pass(const MainTimeParams& params, const LateralFrame& fra
   plan.approach_mm = params.approach_mm;
   plan.entry = strip_side(params.entry, frame, r);
   // L_i = L + Y_(i-1) (cot(alpha_x) - cot(alpha)) for straight contours (inferred).
-  const double length_i =
-      params.length_mm + origin_shift_mm(params.exit, Y_prev) - origin_shift_mm(params.entry, Y_prev);
+  const double length_i = params.length_mm + origin_shift_mm(params.exit, Y_prev) -
+                          origin_shift_mm(params.entry, Y_prev);
   plan.exit = PassExit{strip_side(params.exit, frame, r), length_i, params.extra_path_mm,
                        params.overrun_mm};
   return plan;

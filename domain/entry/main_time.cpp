@@ -5,9 +5,9 @@
 
 #include <cmath>
 #include <cstddef>
-#include <optional>
-#include <string>
+#include <vector>
 
+#include "domain/entry/allowance_checks.h"
 #include "domain/entry/contour_checks.h"
 #include "domain/entry/feeds.h"
 #include "domain/entry/lateral_placement.h"
@@ -18,53 +18,20 @@ namespace cutcalc::domain::entry {
 
 namespace {
 
-// Section 8 (inferred rules): checks on several fields together, cheapest first, before any
-// geometry runs.
-std::optional<DomainError> check_width_of_cut(const MainTimeParams& params) {
-  if (params.allowance.width_of_cut_mm > params.cutter_diameter_mm) {
-    return make_error(ErrorCode::width_of_cut_exceeds_diameter,
-                      "the width of cut must not exceed the cutter diameter");
-  }
-  return std::nullopt;
-}
-
-std::optional<DomainError> check_allowance_width(const MainTimeParams& params, double part_width) {
-  const Allowance& allowance = params.allowance;
-  if (allowance.width_mm > part_width && !detail::same_width(allowance.width_mm, part_width)) {
-    return make_error(ErrorCode::allowance_wider_than_part,
-                      "the allowance width must not exceed the part width");
-  }
-  return std::nullopt;
-}
-
-// E27: several lateral passes are placed from the side edge, so there is no free offset and the
-// passes must cover the whole part.
-std::optional<DomainError> check_several_passes(const MainTimeParams& params, double part_width) {
-  if (params.offset_mm) {
-    return make_error(ErrorCode::offset_with_several_passes,
-                      "offset_mm applies only to a single lateral pass");
-  }
-  if (!detail::same_width(params.allowance.width_mm, part_width)) {
-    return make_error(ErrorCode::allowance_not_full_width,
-                      "with several lateral passes the allowance width must equal the part width");
-  }
-  return std::nullopt;
-}
-
 // E34: one traverse of lateral pass i.
 void set_times(LateralPass& pass, double steady_travel_mm, const detail::Feeds& feeds) {
-  pass.entry_time_min = pass.entry_length_mm / feeds.entry_feed_mm_per_min;   // t_e,i
-  pass.steady_time_min = steady_travel_mm / feeds.feed_mm_per_min;            // t_s,i
-  pass.time_min = pass.entry_time_min + pass.steady_time_min;                 // t_i
+  pass.entry_time_min = pass.entry_length_mm / feeds.entry_feed_mm_per_min;  // t_e,i
+  pass.steady_time_min = steady_travel_mm / feeds.feed_mm_per_min;           // t_s,i
+  pass.time_min = pass.entry_time_min + pass.steady_time_min;                // t_i
 }
 
 LateralPass to_lateral_pass(const detail::LateralFrame& frame, const detail::PassGeometry& geometry,
                             const detail::Feeds& feeds) {
   const EntryLengthResult& one = geometry.result;
   LateralPass pass;
-  pass.width_mm = one.steady_width_mm;  // W_i
-  pass.axis_y_mm = frame.axis_y_mm;     // Y_ax,i
-  pass.offset_mm = frame.offset_mm;     // K_i
+  pass.width_mm = one.steady_width_mm;         // W_i
+  pass.axis_y_mm = frame.axis_y_mm;            // Y_ax,i
+  pass.offset_mm = frame.offset_mm;            // K_i
   pass.strip_width_mm = frame.strip_width_mm;  // B_i
   pass.engagement_length_mm = one.engagement_length_mm;
   pass.entry_length_mm = one.entry_length_mm;
@@ -75,9 +42,11 @@ LateralPass to_lateral_pass(const detail::LateralFrame& frame, const detail::Pas
   return pass;
 }
 
+// Huge inputs can overflow (e.g. a tiny feed and a long stroke); no response may carry an infinity.
 bool all_finite(const MainTimeResult& result) {
   bool finite = std::isfinite(result.spindle_speed_rpm) && std::isfinite(result.feed_per_rev_mm) &&
-                std::isfinite(result.feed_mm_per_min) && std::isfinite(result.entry_feed_mm_per_min) &&
+                std::isfinite(result.feed_mm_per_min) &&
+                std::isfinite(result.entry_feed_mm_per_min) &&
                 std::isfinite(result.main_time_min) && std::isfinite(result.entry_time_min) &&
                 std::isfinite(result.steady_time_min);
   for (const double depth : result.depth_passes_mm) {
@@ -87,7 +56,8 @@ bool all_finite(const MainTimeResult& result) {
     for (const double value :
          {pass.width_mm, pass.axis_y_mm, pass.offset_mm, pass.strip_width_mm,
           pass.engagement_length_mm, pass.entry_length_mm, pass.start.x_mm, pass.start.y_mm,
-          pass.end.x_mm, pass.end.y_mm, pass.working_stroke_mm, pass.time_min}) {
+          pass.end.x_mm, pass.end.y_mm, pass.working_stroke_mm, pass.entry_time_min,
+          pass.steady_time_min, pass.time_min}) {
       finite = finite && std::isfinite(value);
     }
   }
@@ -96,9 +66,10 @@ bool all_finite(const MainTimeResult& result) {
 
 }  // namespace
 
-// E24-E36
+// E24-E36. Checks on fields alone come first, then the contours, then the pass counts; geometry
+// runs last.
 Result<MainTimeResult> compute_main_time(const MainTimeParams& params) {
-  if (auto error = check_width_of_cut(params)) {
+  if (auto error = detail::check_width_of_cut(params)) {
     return *error;
   }
   Result<detail::Feeds> feeds = detail::compute_feeds(params);  // E30-E33
@@ -112,21 +83,23 @@ Result<MainTimeResult> compute_main_time(const MainTimeParams& params) {
   if (auto error = detail::check_exit_width(params.exit, B)) {
     return *error;
   }
-  if (auto error = check_allowance_width(params, B)) {
+  if (auto error = detail::check_allowance_width(params, B)) {
     return *error;
   }
 
   const Allowance& allowance = params.allowance;
-  const Result<std::size_t> N1 = detail::pass_count(allowance.width_mm, allowance.width_of_cut_mm, "lateral");
+  const Result<std::size_t> N1 =
+      detail::pass_count(allowance.width_mm, allowance.width_of_cut_mm, "lateral");  // N1 (E24)
   if (!N1.ok()) {
     return N1.error();
   }
-  const Result<std::size_t> N2 = detail::pass_count(allowance.depth_mm, allowance.depth_of_cut_mm, "depth");
+  const Result<std::size_t> N2 =
+      detail::pass_count(allowance.depth_mm, allowance.depth_of_cut_mm, "depth");  // N2 (E24)
   if (!N2.ok()) {
     return N2.error();
   }
   if (N1.value() > 1) {
-    if (auto error = check_several_passes(params, B)) {
+    if (auto error = detail::check_several_passes(params, B)) {
       return *error;
     }
   }
@@ -147,7 +120,8 @@ Result<MainTimeResult> compute_main_time(const MainTimeParams& params) {
   double time_one_level = 0.0;         // sum_i t_i
   result.lateral_passes.reserve(frames.size());
   for (const detail::LateralFrame& frame : frames) {
-    Result<detail::PassGeometry> geometry = detail::solve_pass(detail::plan_lateral_pass(params, frame));
+    Result<detail::PassGeometry> geometry =
+        detail::solve_pass(detail::plan_lateral_pass(params, frame));  // E29
     if (!geometry.ok()) {
       return geometry.error();
     }

@@ -48,10 +48,10 @@ Result<PassGeometry> solve_pass(const PassPlan& plan) {
 
   PassGeometry geometry;
   EntryLengthResult& result = geometry.result;
-  result.engagement_length_mm = x_cs - x_c0;                            // L_vr1 (E6)
-  result.entry_length_mm = plan.approach_mm + result.engagement_length_mm;  // L_vr (E6)
+  result.engagement_length_mm = x_cs - x_c0;                                 // L_vr1 (E6)
+  result.entry_length_mm = plan.approach_mm + result.engagement_length_mm;   // L_vr (E6)
   result.start = Position{plan.approach_mm - x_c0, frame_y_mm(plan.entry)};  // X_n, Y_n (E7)
-  result.steady_width_mm = entry_band->width_mm;                        // W (E2)
+  result.steady_width_mm = entry_band->width_mm;                             // W (E2)
   if (!plan.exit) {
     return geometry;
   }
@@ -61,7 +61,7 @@ Result<PassGeometry> solve_pass(const PassPlan& plan) {
   // E22: the periphery stops at the wall face, so the axis stays r short of it and never overruns.
   const double x_end = wall ? -exit.side.lateral.cutter_radius_mm
                             : exit_end_x_mm(exit.side.contour, exit.side.lateral, *exit_band);
-  const double X_k = -x_end;                           // X_k (E8)
+  const double X_k = -x_end;                            // X_k (E8)
   const double overrun = wall ? 0.0 : exit.overrun_mm;  // L_per
   // E23: the steady travel straight from its terms; subtracting two rounded strokes could turn a
   // boundary case negative.
