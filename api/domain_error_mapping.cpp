@@ -27,8 +27,10 @@ const char* pointer_of(domain::ErrorCode code) {
       return "/allowance/width_of_cut_mm";
     case ErrorCode::entry_feed_exceeds_feed:
       return "/entry_feed_per_tooth_mm";
-    case ErrorCode::too_many_passes:
-      return "/allowance";
+    case ErrorCode::too_many_lateral_passes:
+      return "/allowance/width_of_cut_mm";
+    case ErrorCode::too_many_depth_passes:
+      return "/allowance/depth_of_cut_mm";
     case ErrorCode::not_converged:
       break;
   }

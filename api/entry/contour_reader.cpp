@@ -7,6 +7,10 @@ using domain::entry::ContourKind;
 
 namespace {
 
+// 0 < alpha < 180 (spec section 8), and no closer than 0.001 degrees to either end: an edge that
+// near parallel to the feed has a cotangent that overflows any size, and no workpiece has it.
+constexpr Bounds kAngleBounds{0.001, true, 179.999, true};
+
 std::optional<ContourKind> read_kind(ObjectReader& reader, ContourSide side) {
   const auto name = side == ContourSide::entry
                         ? reader.required_choice("contour", {"straight", "convex_arc", "concave_arc"})
@@ -43,7 +47,7 @@ std::optional<Contour> read_contour(ObjectReader& reader, ContourSide side) {
   switch (*kind) {
     case ContourKind::straight:
       contour.width_mm = reader.required_number("width_mm", Bounds::positive());
-      contour.angle_deg = reader.number_or("angle_deg", Bounds::open(0.0, 180.0), 90.0);
+      contour.angle_deg = reader.number_or("angle_deg", kAngleBounds, 90.0);
       break;
     case ContourKind::convex_arc:
       contour.radius_mm = reader.required_number("radius_mm", Bounds::positive()).value_or(0.0);

@@ -23,7 +23,8 @@ enum class ErrorCode {
   allowance_not_full_width,     // H1 != B with N1 > 1
   width_of_cut_exceeds_diameter,  // t > D
   entry_feed_exceeds_feed,      // S_z1 > S_z
-  too_many_passes,              // N1 or N2 above the service's limit (a guard, not the model; E24)
+  too_many_lateral_passes,      // N1 above the service's limit (a guard, not the model; E24)
+  too_many_depth_passes,        // N2 above the service's limit (a guard, not the model; E24)
   not_converged,                // a numerical procedure failed: a bug, reported as 500
 };
 

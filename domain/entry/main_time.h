@@ -78,7 +78,7 @@ struct MainTimeResult {
 
 // E24-E36. Errors: every error of compute_entry_length, plus offset_with_several_passes,
 // allowance_wider_than_part, allowance_not_full_width, width_of_cut_exceeds_diameter,
-// entry_feed_exceeds_feed, too_many_passes.
+// entry_feed_exceeds_feed, too_many_lateral_passes, too_many_depth_passes.
 Result<MainTimeResult> compute_main_time(const MainTimeParams& params);
 
 }  // namespace cutcalc::domain::entry

@@ -16,11 +16,12 @@ constexpr double kCeilGuard = 1e-9;
 }  // namespace
 
 // E24
-Result<std::size_t> pass_count(double allowance_mm, double cut_mm, const char* what) {
+Result<std::size_t> pass_count(double allowance_mm, double cut_mm, ErrorCode too_many,
+                               const char* what) {
   const double count = std::ceil(allowance_mm / cut_mm - kCeilGuard);  // N
   // Written so that a NaN or an infinite quotient also fails before the integer conversion.
   if (!(count <= static_cast<double>(kMaxPassCount))) {
-    return make_error(ErrorCode::too_many_passes,
+    return make_error(too_many,
                       std::string("too many ") + what + " passes: at most " +
                           std::to_string(kMaxPassCount) + " are computed");
   }

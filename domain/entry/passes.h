@@ -12,8 +12,9 @@ namespace cutcalc::domain::entry::detail {
 // allowance divided into millions of cuts is refused instead of filling memory.
 inline constexpr std::size_t kMaxPassCount = 10000;
 
-// E24: N = ceil(allowance / cut - 1e-9), at least 1. Error: too_many_passes above kMaxPassCount.
-Result<std::size_t> pass_count(double allowance_mm, double cut_mm, const char* what);
+// E24: N = ceil(allowance / cut - 1e-9), at least 1. Error `too_many` above kMaxPassCount.
+Result<std::size_t> pass_count(double allowance_mm, double cut_mm, ErrorCode too_many,
+                               const char* what);
 
 // E25: N - 1 full cuts, then the remainder allowance - (N - 1) cut.
 std::vector<double> pass_sizes(std::size_t count, double allowance_mm, double cut_mm);

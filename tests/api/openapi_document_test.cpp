@@ -147,8 +147,9 @@ TEST(OpenApiDocument, LoadsAsOpenApi31WithInfoAndServers) {
 
 TEST(OpenApiDocument, YamlScalarsKeepTheirTypes) {
   const json& straight = doc()["components"]["schemas"]["StraightContour"]["properties"];
-  EXPECT_TRUE(straight["angle_deg"]["exclusiveMaximum"].is_number_integer());
-  EXPECT_EQ(straight["angle_deg"]["exclusiveMaximum"], 180);
+  EXPECT_TRUE(straight["width_mm"]["maximum"].is_number_integer());
+  EXPECT_EQ(straight["width_mm"]["maximum"], 1000000);
+  EXPECT_TRUE(straight["angle_deg"]["maximum"].is_number_float());
   EXPECT_TRUE(straight["contour"]["const"].is_string());
   EXPECT_TRUE(
       doc()["paths"]["/v1/entry-length"]["post"]["responses"].contains("200"));  // quoted key
