@@ -41,12 +41,14 @@ const char* pointer_of(domain::ErrorCode code) {
 
 Problem to_problem(const domain::DomainError& error) {
   if (error.code == domain::ErrorCode::not_converged) {
-    // Validated input that the numerics cannot answer is our bug: log the detail, answer generically.
+    // Validated input that the numerics cannot answer is our bug: log the detail, answer
+    // generically.
     spdlog::error("numerical procedure failed on validated input: {}", error.detail);
-    return Problem{ProblemKind::internal_error, "the calculation failed; this is a bug in cutcalc",
-                   {}};
+    return Problem{
+        ProblemKind::internal_error, "the calculation failed; this is a bug in cutcalc", {}};
   }
-  return Problem{ProblemKind::impossible_input, error.detail,
+  return Problem{ProblemKind::impossible_input,
+                 error.detail,
                  {FieldError{pointer_of(error.code), error.detail}}};
 }
 

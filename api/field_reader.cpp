@@ -117,8 +117,8 @@ double ObjectReader::number_or(std::string_view key, const Bounds& bounds, doubl
 
 std::optional<std::int64_t> ObjectReader::required_integer(std::string_view key, std::int64_t min,
                                                            std::int64_t max) {
-  const auto number = required_number(
-      key, Bounds{static_cast<double>(min), true, static_cast<double>(max), true});
+  const auto number =
+      required_number(key, Bounds{static_cast<double>(min), true, static_cast<double>(max), true});
   if (!number) {
     return std::nullopt;
   }

@@ -79,7 +79,8 @@ constexpr int kNumberOverflowId = 406;  // nlohmann::json out_of_range: a number
 
 std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
   if (body.empty()) {
-    return Problem{ProblemKind::malformed_json, "the request body is empty; send a JSON object", {}};
+    return Problem{
+        ProblemKind::malformed_json, "the request body is empty; send a JSON object", {}};
   }
   // Keys seen so far in each open object, innermost last: duplicate keys are ambiguous input.
   std::vector<std::set<std::string>> open_objects;
@@ -126,7 +127,8 @@ std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
     return Problem{ProblemKind::malformed_json, rejected.why, {}};
   } catch (const nlohmann::json::out_of_range& error) {
     if (error.id == kNumberOverflowId) {
-      return invalid_input({FieldError{position.pointer(), "must be a finite number (too large for a double)"}});
+      return invalid_input(
+          {FieldError{position.pointer(), "must be a finite number (too large for a double)"}});
     }
     return Problem{ProblemKind::malformed_json, "the request body is not valid JSON", {}};
   } catch (const nlohmann::json::exception& error) {

@@ -27,12 +27,11 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
   const std::string instance(request.path);
   const std::string request_id(request.request_id);
   if (!is_json_media_type(request.content_type)) {
-    return problem_response(
-        Problem{ProblemKind::unsupported_media_type,
-                "send the request body as application/json (got \"" +
-                    std::string(request.content_type.substr(0, 100)) + "\")",
-                {}},
-        instance, request_id);
+    return problem_response(Problem{ProblemKind::unsupported_media_type,
+                                    "send the request body as application/json (got \"" +
+                                        std::string(request.content_type.substr(0, 100)) + "\")",
+                                    {}},
+                            instance, request_id);
   }
   auto parsed = parse_json_body(request.body);
   if (auto* problem = std::get_if<Problem>(&parsed)) {
@@ -47,7 +46,8 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
     spdlog::error("non-finite number in the response of {} (request {}): {}", instance, request_id,
                   std::string(request.body.substr(0, 4096)));
     return problem_response(
-        Problem{ProblemKind::internal_error, "the calculation failed; this is a bug in cutcalc", {}},
+        Problem{
+            ProblemKind::internal_error, "the calculation failed; this is a bug in cutcalc", {}},
         instance, request_id);
   }
   return ApiResponse{200, "application/json", body.dump(), {}};

@@ -93,8 +93,10 @@ std::string problem_json(const Problem& problem, const std::string& instance,
 
 ApiResponse problem_response(const Problem& problem, const std::string& instance,
                              const std::string& request_id) {
-  return ApiResponse{http_status(problem.kind), kProblemMediaType,
-                     problem_json(problem, instance, request_id), {}};
+  return ApiResponse{http_status(problem.kind),
+                     kProblemMediaType,
+                     problem_json(problem, instance, request_id),
+                     {}};
 }
 
 }  // namespace cutcalc::api

@@ -34,7 +34,8 @@ struct Problem {
 
 int http_status(ProblemKind kind);
 
-// A problem for field errors; its detail names the first field, e.g. "cutter_diameter_mm must be > 0".
+// A problem for field errors; its detail names the first field, e.g. "cutter_diameter_mm must be >
+// 0".
 Problem invalid_input(std::vector<FieldError> errors);
 
 // The response body; instance is the request path, request_id the request's id (may be empty).

@@ -13,8 +13,10 @@ struct Setting {
 };
 
 constexpr std::array kSettings = {
-    Setting{"--host", "CUTCALC_HOST"},           Setting{"--port", "CUTCALC_PORT"},
-    Setting{"--threads", "CUTCALC_THREADS"},     Setting{"--log-level", "CUTCALC_LOG_LEVEL"},
+    Setting{"--host", "CUTCALC_HOST"},
+    Setting{"--port", "CUTCALC_PORT"},
+    Setting{"--threads", "CUTCALC_THREADS"},
+    Setting{"--log-level", "CUTCALC_LOG_LEVEL"},
     Setting{"--log-format", "CUTCALC_LOG_FORMAT"},
 };
 

@@ -23,7 +23,6 @@ ElasticThreadPool::~ElasticThreadPool() { shutdown(); }
 
 void ElasticThreadPool::enqueue(std::function<void()> fn) {
   std::unique_lock lock(mutex_);
-  reap_finished_locked();
   // Back-pressure: at the cap with a full queue, the caller (the accept loop) waits for room.
   space_cv_.wait(lock, [&] { return shutdown_ || tasks_.size() < limits_.max_queued; });
   if (shutdown_) {
@@ -32,21 +31,40 @@ void ElasticThreadPool::enqueue(std::function<void()> fn) {
     fn();
     return;
   }
+  auto inline_task = push_locked(std::move(fn));
+  lock.unlock();
+  if (inline_task) {
+    inline_task();
+  } else {
+    work_cv_.notify_one();
+  }
+}
+
+bool ElasticThreadPool::try_enqueue(std::function<void()>& fn) {
+  std::unique_lock lock(mutex_);
+  if (shutdown_ || tasks_.size() >= limits_.max_queued) return false;
+  auto inline_task = push_locked(std::move(fn));
+  lock.unlock();
+  if (inline_task) {
+    inline_task();
+  } else {
+    work_cv_.notify_one();
+  }
+  return true;
+}
+
+std::function<void()> ElasticThreadPool::push_locked(std::function<void()> fn) {
+  reap_finished_locked();
   tasks_.push_back(std::move(fn));
-  if (idle_ < tasks_.size() && live_ < limits_.max_threads) {
-    if (!spawn_locked() && live_ == 0) {
-      // No thread at all and none can be started: run it here so its socket is not leaked.
-      auto task = std::move(tasks_.back());
-      tasks_.pop_back();
-      publish_locked();
-      lock.unlock();
-      task();
-      return;
-    }
+  if (idle_ < tasks_.size() && live_ < limits_.max_threads && !spawn_locked() && live_ == 0) {
+    // No thread at all and none can be started: the caller runs it, so nothing is leaked.
+    auto task = std::move(tasks_.back());
+    tasks_.pop_back();
+    publish_locked();
+    return task;
   }
   publish_locked();
-  lock.unlock();
-  work_cv_.notify_one();
+  return {};
 }
 
 void ElasticThreadPool::shutdown() {

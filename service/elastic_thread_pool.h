@@ -54,6 +54,9 @@ class ElasticThreadPool final : public httplib::TaskQueue {
   ~ElasticThreadPool() override;
 
   void enqueue(std::function<void()> fn) override;
+  // Like enqueue(), but never waits: false (and `fn` untouched) when the queue is full at the
+  // cap or the pool is shut down.
+  bool try_enqueue(std::function<void()>& fn);
   // Runs every queued task, then joins every thread. Idempotent.
   void shutdown() override;
 
@@ -63,6 +66,9 @@ class ElasticThreadPool final : public httplib::TaskQueue {
   using ThreadList = std::list<std::thread>;
 
   void worker(ThreadList::iterator self);
+  // Queues the task and starts a thread for it if none is idle; may hand the task back to run
+  // inline (returned non-empty) when no thread exists or can be started.
+  std::function<void()> push_locked(std::function<void()> fn);
   bool spawn_locked();        // false if the thread could not be started
   void reap_finished_locked();  // joins threads that exited for idleness
   void publish_locked();

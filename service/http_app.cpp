@@ -5,8 +5,8 @@
 #include <string>
 
 #include <httplib.h>
-#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
 
 #include "api/json_endpoint.h"
 #include "api/problem.h"
@@ -40,7 +40,8 @@ void write(httplib::Response& res, const api::ApiResponse& response) {
   res.set_content(response.body, response.content_type.c_str());
 }
 
-void write_problem(const httplib::Request& req, httplib::Response& res, const api::Problem& problem) {
+void write_problem(const httplib::Request& req, httplib::Response& res,
+                   const api::Problem& problem) {
   write(res, api::problem_response(problem, req.path, res.get_header_value(kRequestIdHeader)));
 }
 
@@ -73,7 +74,8 @@ HttpApp::HttpApp(Config config)
 HttpApp::~HttpApp() = default;
 
 int HttpApp::bind() {
-  return bind_with_backlog(*server_, config_.host.c_str(), config_.port, config_.http.listen_backlog);
+  return bind_with_backlog(*server_, config_.host.c_str(), config_.port,
+                           config_.http.listen_backlog);
 }
 
 bool HttpApp::serve() { return server_->listen_after_bind(); }
@@ -98,10 +100,11 @@ void HttpApp::install_middleware() {
     }
     t_request.route = route->path.c_str();
     if (!RouteTable::allows(*route, req.method)) {
-      write_problem(req, res,
-                    {api::ProblemKind::method_not_allowed,
-                     req.method + " is not allowed on " + route->path + "; allowed: " + route->allow,
-                     {}});
+      write_problem(
+          req, res,
+          {api::ProblemKind::method_not_allowed,
+           req.method + " is not allowed on " + route->path + "; allowed: " + route->allow,
+           {}});
       res.set_header("Allow", route->allow);
       return httplib::Server::HandlerResponse::Handled;
     }
@@ -110,17 +113,17 @@ void HttpApp::install_middleware() {
 
   // Statuses set by the library itself (body too large, malformed request line) get a problem
   // body too; responses that already have a body are ours and are left alone.
-  server_->set_error_handler(httplib::Server::HandlerWithResponse(
-      [](const httplib::Request& req, httplib::Response& res) {
-    if (!res.body.empty()) {
-      return httplib::Server::HandlerResponse::Unhandled;
-    }
-    if (!res.has_header(kRequestIdHeader)) {
-      res.set_header(kRequestIdHeader, generate_request_id());
-    }
-    write_problem(req, res, library_problem(res.status));
-    return httplib::Server::HandlerResponse::Handled;
-  }));
+  server_->set_error_handler(
+      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
+        if (!res.body.empty()) {
+          return httplib::Server::HandlerResponse::Unhandled;
+        }
+        if (!res.has_header(kRequestIdHeader)) {
+          res.set_header(kRequestIdHeader, generate_request_id());
+        }
+        write_problem(req, res, library_problem(res.status));
+        return httplib::Server::HandlerResponse::Handled;
+      }));
 
   server_->set_exception_handler(
       [](const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
@@ -133,14 +136,16 @@ void HttpApp::install_middleware() {
         }
         spdlog::error("unhandled exception on {} {} (request {}): {}", req.method, req.path,
                       res.get_header_value(kRequestIdHeader), what);
-        write_problem(req, res,
-                      {api::ProblemKind::internal_error, "an internal error occurred; it was logged", {}});
+        write_problem(
+            req, res,
+            {api::ProblemKind::internal_error, "an internal error occurred; it was logged", {}});
       });
 
   server_->set_logger([this](const httplib::Request& req, const httplib::Response& res) {
     const double seconds =
-        t_request.counted_in_flight ? std::chrono::duration<double>(Clock::now() - t_request.start).count()
-                                    : 0.0;
+        t_request.counted_in_flight
+            ? std::chrono::duration<double>(Clock::now() - t_request.start).count()
+            : 0.0;
     if (t_request.counted_in_flight) {
       metrics_.leave();
     }

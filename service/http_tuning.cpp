@@ -94,14 +94,21 @@ class ConnectionStream final : public httplib::Stream {
     if (size == 0) return 0;
     if (has_buffered_input()) return take_buffered(ptr, size);
     if (!flush()) return -1;
-    const auto wait = read_wait();
-    if (wait.count() <= 0 || !wait_socket(sock_, POLLIN, wait)) {
-      if (has_deadline_ && Clock::now() >= deadline_) timed_out_ = true;
-      return -1;
+    // Large reads go straight to the caller's buffer, small ones through in_.
+    const bool direct = size >= in_.size();
+    char* const into = direct ? ptr : in_.data();
+    const size_t room = direct ? size : in_.size();
+    // Usually the bytes are already there (the idle wait polled for them): try first, poll after.
+    ssize_t n = recv_some(into, room, MSG_DONTWAIT);
+    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      const auto wait = read_wait();
+      if (wait.count() <= 0 || !wait_socket(sock_, POLLIN, wait)) {
+        if (has_deadline_ && Clock::now() >= deadline_) timed_out_ = true;
+        return -1;
+      }
+      n = recv_some(into, room, MSG_DONTWAIT);
     }
-    if (size >= in_.size()) return recv_some(ptr, size);
-    const ssize_t n = recv_some(in_.data(), in_.size());
-    if (n <= 0) return n;
+    if (n <= 0 || direct) return n;
     in_off_ = 0;
     in_len_ = static_cast<std::size_t>(n);
     return take_buffered(ptr, size);
@@ -132,7 +139,12 @@ class ConnectionStream final : public httplib::Stream {
     port = peer_port_;
   }
   void get_local_ip_and_port(std::string& ip, int& port) const override {
-    peer_or_local(sock_, false, ip, port);
+    if (!local_known_) {
+      peer_or_local(sock_, false, local_ip_, local_port_);
+      local_known_ = true;
+    }
+    ip = local_ip_;
+    port = local_port_;
   }
   socket_t socket() const override { return sock_; }
 
@@ -150,9 +162,9 @@ class ConnectionStream final : public httplib::Stream {
     return static_cast<ssize_t>(n);
   }
 
-  ssize_t recv_some(char* ptr, size_t size) {
+  ssize_t recv_some(char* ptr, size_t size, int flags) {
     for (;;) {
-      const ssize_t n = ::recv(sock_, ptr, size, 0);
+      const ssize_t n = ::recv(sock_, ptr, size, flags);
       if (n >= 0 || errno != EINTR) return n;
     }
   }
@@ -188,6 +200,9 @@ class ConnectionStream final : public httplib::Stream {
   mutable bool peer_known_ = false;
   mutable std::string peer_ip_;
   mutable int peer_port_ = 0;
+  mutable bool local_known_ = false;  // process_request asks for both on every request
+  mutable std::string local_ip_;
+  mutable int local_port_ = 0;
 };
 
 // The protected listening socket of any httplib::Server (a pointer to member formed through a

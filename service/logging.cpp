@@ -2,10 +2,10 @@
 
 #include <memory>
 
-#include <nlohmann/json.hpp>
 #include <spdlog/pattern_formatter.h>
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
 
 namespace cutcalc::service {
 namespace {
@@ -18,7 +18,8 @@ class JsonMessageFlag final : public spdlog::custom_flag_formatter {
  public:
   void format(const spdlog::details::log_msg& msg, const std::tm& /*time*/,
               spdlog::memory_buf_t& dest) override {
-    const std::string quoted = json_quoted(std::string_view(msg.payload.data(), msg.payload.size()));
+    const std::string quoted =
+        json_quoted(std::string_view(msg.payload.data(), msg.payload.size()));
     dest.append(quoted.data(), quoted.data() + quoted.size());
   }
   [[nodiscard]] std::unique_ptr<custom_flag_formatter> clone() const override {
@@ -29,8 +30,8 @@ class JsonMessageFlag final : public spdlog::custom_flag_formatter {
 }  // namespace
 
 std::string json_quoted(std::string_view text) {
-  return nlohmann::json(std::string(text)).dump(-1, ' ', false,
-                                                nlohmann::json::error_handler_t::replace);
+  return nlohmann::json(std::string(text))
+      .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 void setup_logging(const std::string& level, LogFormat format) {
@@ -69,8 +70,8 @@ void log_access(const AccessRecord& record) {
         json_quoted(record.request_id), json_quoted(record.remote_addr));
   } else {
     g_access->info("access {} {} {} {:.3f}ms request_id={} remote={}", record.method,
-                   json_quoted(record.path),
-                   record.status, record.duration_ms, record.request_id, record.remote_addr);
+                   json_quoted(record.path), record.status, record.duration_ms, record.request_id,
+                   record.remote_addr);
   }
 }
 

@@ -16,12 +16,12 @@
 int main(int argc, char** argv) {
   using namespace cutcalc::service;
   const std::vector<std::string> args(argv + 1, argv + argc);
-  const ConfigOutcome outcome = parse_config(args, [](const char* name) { return std::getenv(name); });
+  const ConfigOutcome outcome =
+      parse_config(args, [](const char* name) { return std::getenv(name); });
   if (!outcome.config) {
-    const std::string text = outcome.print_version
-                                 ? "cutcalc " + std::string(build_version()) + " (" +
-                                       std::string(build_commit()) + ")\n"
-                                 : outcome.message + "\n";
+    const std::string text = outcome.print_version ? "cutcalc " + std::string(build_version()) +
+                                                         " (" + std::string(build_commit()) + ")\n"
+                                                   : outcome.message + "\n";
     std::fputs(text.c_str(), outcome.exit_code == 0 ? stdout : stderr);
     return outcome.exit_code;
   }

@@ -14,7 +14,9 @@ struct RouteEntry {
 
 class RouteTable {
  public:
-  void add(std::string path, std::string allow) { routes_.push_back({std::move(path), std::move(allow)}); }
+  void add(std::string path, std::string allow) {
+    routes_.push_back({std::move(path), std::move(allow)});
+  }
   // The entry for an exact path, or nullptr.
   [[nodiscard]] const RouteEntry* find(std::string_view path) const {
     for (const RouteEntry& route : routes_) {

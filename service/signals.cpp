@@ -1,7 +1,7 @@
 #include "service/signals.h"
 
-#include <csignal>
 #include <pthread.h>
+#include <csignal>
 
 namespace cutcalc::service {
 namespace {

@@ -12,10 +12,10 @@ namespace {
 constexpr Bounds kAngleBounds{0.001, true, 179.999, true};
 
 std::optional<ContourKind> read_kind(ObjectReader& reader, ContourSide side) {
-  const auto name = side == ContourSide::entry
-                        ? reader.required_choice("contour", {"straight", "convex_arc", "concave_arc"})
-                        : reader.required_choice("contour",
-                                                 {"straight", "convex_arc", "concave_arc", "wall"});
+  const auto name =
+      side == ContourSide::entry
+          ? reader.required_choice("contour", {"straight", "convex_arc", "concave_arc"})
+          : reader.required_choice("contour", {"straight", "convex_arc", "concave_arc", "wall"});
   if (!name) {
     return std::nullopt;
   }

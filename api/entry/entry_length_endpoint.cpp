@@ -12,7 +12,8 @@ namespace {
 // The request's fields; meaningful only when the reader recorded no error.
 domain::entry::EntryLengthParams read_params(ObjectReader& in) {
   domain::entry::EntryLengthParams params;
-  params.cutter_diameter_mm = in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
+  params.cutter_diameter_mm =
+      in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
   params.offset_mm = in.number_or("offset_mm", Bounds::magnitude(), 0.0);
   params.approach_mm = in.number_or("approach_mm", Bounds::non_negative(), 2.0);
   ObjectReader entry = in.object("entry", true);

@@ -17,9 +17,11 @@ domain::entry::Allowance read_allowance(ObjectReader& in) {
   ObjectReader allowance = in.object("allowance", true);
   domain::entry::Allowance out;
   out.width_mm = allowance.required_number("width_mm", Bounds::positive()).value_or(0.0);
-  out.width_of_cut_mm = allowance.required_number("width_of_cut_mm", Bounds::positive()).value_or(0.0);
+  out.width_of_cut_mm =
+      allowance.required_number("width_of_cut_mm", Bounds::positive()).value_or(0.0);
   out.depth_mm = allowance.required_number("depth_mm", Bounds::positive()).value_or(0.0);
-  out.depth_of_cut_mm = allowance.required_number("depth_of_cut_mm", Bounds::positive()).value_or(0.0);
+  out.depth_of_cut_mm =
+      allowance.required_number("depth_of_cut_mm", Bounds::positive()).value_or(0.0);
   allowance.reject_unknown_fields();
   return out;
 }
@@ -27,7 +29,8 @@ domain::entry::Allowance read_allowance(ObjectReader& in) {
 // The request's fields; meaningful only when the reader recorded no error.
 MainTimeParams read_params(ObjectReader& in) {
   MainTimeParams params;
-  params.cutter_diameter_mm = in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
+  params.cutter_diameter_mm =
+      in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
   params.teeth = static_cast<int>(in.required_integer("teeth", 1, kMaxTeeth).value_or(1));
 
   const auto rpm = in.optional_number("spindle_speed_rpm", Bounds::positive());
@@ -37,9 +40,11 @@ MainTimeParams read_params(ObjectReader& in) {
   } else if (cutting_speed) {
     params.speed = domain::entry::CuttingSpeed{*cutting_speed};
   }
-  params.feed_per_tooth_mm = in.required_number("feed_per_tooth_mm", Bounds::positive()).value_or(0);
+  params.feed_per_tooth_mm =
+      in.required_number("feed_per_tooth_mm", Bounds::positive()).value_or(0);
   const auto factor = in.optional_number("entry_feed_factor", Bounds::left_open(0.0, 1.0));
-  const auto entry_feed_per_tooth = in.optional_number("entry_feed_per_tooth_mm", Bounds::positive());
+  const auto entry_feed_per_tooth =
+      in.optional_number("entry_feed_per_tooth_mm", Bounds::positive());
   if (entry_feed_per_tooth) {
     params.entry_feed = domain::entry::EntryFeedPerTooth{*entry_feed_per_tooth};
   } else {

@@ -1,5 +1,6 @@
 // Benchmarks of the entry-length family (spec entry-and-main-time.md): one pass with an exit over a
-// straight edge and over a convex arc, and a main-time setup of N1 = 3 lateral x N2 = 5 depth passes.
+// straight edge and over a convex arc, and a main-time setup of N1 = 3 lateral x N2 = 5 depth
+// passes.
 
 #include <benchmark/benchmark.h>
 

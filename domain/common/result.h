@@ -1,6 +1,7 @@
 #pragma once
 // The outcome of a domain calculation: a value or a DomainError, never both. Domain code reports
-// impossible inputs through ErrorCode (mapped once to HTTP in api/), never by exceptions or asserts.
+// impossible inputs through ErrorCode (mapped once to HTTP in api/), never by exceptions or
+// asserts.
 
 #include <cstddef>
 #include <optional>
@@ -13,24 +14,24 @@ namespace cutcalc::domain {
 // Every way a validated request can still be impossible for the model. The API layer maps each
 // code to one HTTP status and one JSON Pointer (api/errors/domain_error_mapping.cpp).
 enum class ErrorCode {
-  no_contact,                   // the cutter band misses the workpiece (E2: W <= 0)
-  stroke_shorter_than_entry,    // L_rx < L_vr (E23)
+  no_contact,                     // the cutter band misses the workpiece (E2: W <= 0)
+  stroke_shorter_than_entry,      // L_rx < L_vr (E23)
   entry_arc_wider_than_diameter,  // entry width_mm > 2 radius_mm
   exit_arc_wider_than_diameter,   // exit width_mm > 2 radius_mm
-  exit_width_mismatch,          // exit width differs from the entry / part width
-  offset_with_several_passes,   // offset_mm given with N1 > 1 lateral passes (E27)
-  allowance_wider_than_part,    // H1 > B
-  allowance_not_full_width,     // H1 != B with N1 > 1
+  exit_width_mismatch,            // exit width differs from the entry / part width
+  offset_with_several_passes,     // offset_mm given with N1 > 1 lateral passes (E27)
+  allowance_wider_than_part,      // H1 > B
+  allowance_not_full_width,       // H1 != B with N1 > 1
   width_of_cut_exceeds_diameter,  // t > D
-  entry_feed_exceeds_feed,      // S_z1 > S_z
-  too_many_lateral_passes,      // N1 above the service's limit (a guard, not the model; E24)
-  too_many_depth_passes,        // N2 above the service's limit (a guard, not the model; E24)
-  not_converged,                // a numerical procedure failed: a bug, reported as 500
+  entry_feed_exceeds_feed,        // S_z1 > S_z
+  too_many_lateral_passes,        // N1 above the service's limit (a guard, not the model; E24)
+  too_many_depth_passes,          // N2 above the service's limit (a guard, not the model; E24)
+  not_converged,                  // a numerical procedure failed: a bug, reported as 500
 };
 
 struct DomainError {
   ErrorCode code;
-  std::string detail;  // English, for people; no internal state
+  std::string detail;                // English, for people; no internal state
   std::optional<std::size_t> index;  // element of a list input the error is about, if any
 };
 

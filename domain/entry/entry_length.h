@@ -32,7 +32,7 @@ struct Position {
 };
 
 struct ExitResult {
-  Position end;                   // X_k, Y_k (E8)
+  Position end;                    // X_k, Y_k (E8)
   double working_stroke_mm = 0.0;  // L_rx (E9)
 };
 

@@ -1,7 +1,7 @@
 #pragma once
-// Main (machine) time of a face-milling setup over N1 lateral x N2 depth passes, with a reduced feed
-// on each entry section (spec entry-and-main-time.md E24-E36; paper 002).
-// Units: millimetres, rev/min, mm/min, m/min for the cutting speed, minutes for times.
+// Main (machine) time of a face-milling setup over N1 lateral x N2 depth passes, with a reduced
+// feed on each entry section (spec entry-and-main-time.md E24-E36; paper 002). Units: millimetres,
+// rev/min, mm/min, m/min for the cutting speed, minutes for times.
 
 #include <variant>
 #include <vector>
@@ -65,10 +65,10 @@ struct LateralPass {
 };
 
 struct MainTimeResult {
-  double spindle_speed_rpm = 0.0;      // n (E30)
-  double feed_per_rev_mm = 0.0;        // S_o (E31)
-  double feed_mm_per_min = 0.0;        // S_m2 (E32)
-  double entry_feed_mm_per_min = 0.0;  // S_m1 (E33)
+  double spindle_speed_rpm = 0.0;       // n (E30)
+  double feed_per_rev_mm = 0.0;         // S_o (E31)
+  double feed_mm_per_min = 0.0;         // S_m2 (E32)
+  double entry_feed_mm_per_min = 0.0;   // S_m1 (E33)
   std::vector<double> depth_passes_mm;  // E25
   std::vector<LateralPass> lateral_passes;
   double main_time_min = 0.0;    // T_o (E35)

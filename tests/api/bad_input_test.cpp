@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "support/test_server.h"
 #include "support/reference_compare.h"
+#include "support/test_server.h"
 
 namespace cutcalc::testing {
 namespace {
@@ -83,16 +83,19 @@ TEST(BadInput, DeeplyNestedJsonIsRejectedWithoutRecursion) {
 }
 
 TEST(BadInput, StringsForNumbersNameTheField) {
-  const JsonReply reply = post(
-      kEntry, R"({"cutter_diameter_mm": "20", "entry": {"contour": "straight", "width_mm": "60"}})");
+  const JsonReply reply =
+      post(kEntry,
+           R"({"cutter_diameter_mm": "20", "entry": {"contour": "straight", "width_mm": "60"}})");
   expect_problem(reply, 422);
   EXPECT_TRUE(problem_names_pointer(reply.json, "/cutter_diameter_mm"));
   EXPECT_TRUE(problem_names_pointer(reply.json, "/entry/width_mm"));
 }
 
 TEST(BadInput, NanLiteralIsNotJson) {
-  expect_problem(post(kEntry, R"({"cutter_diameter_mm": NaN, "entry": {"contour": "straight", "width_mm": 60}})"),
-                 400);
+  expect_problem(
+      post(kEntry,
+           R"({"cutter_diameter_mm": NaN, "entry": {"contour": "straight", "width_mm": 60}})"),
+      400);
 }
 
 TEST(BadInput, NumberTooLargeForADoubleNamesItsField) {
@@ -103,8 +106,9 @@ TEST(BadInput, NumberTooLargeForADoubleNamesItsField) {
 }
 
 TEST(BadInput, HugeFiniteSizesAreRejectedNotOverflowed) {
-  const JsonReply reply = post(
-      kEntry, R"({"cutter_diameter_mm": 1e300, "entry": {"contour": "straight", "width_mm": 1e300}})");
+  const JsonReply reply =
+      post(kEntry,
+           R"({"cutter_diameter_mm": 1e300, "entry": {"contour": "straight", "width_mm": 1e300}})");
   expect_problem(reply, 422);
   EXPECT_TRUE(problem_names_pointer(reply.json, "/cutter_diameter_mm"));
 }
@@ -117,7 +121,8 @@ TEST(BadInput, NegativeAndZeroSizesNameEachField) {
   EXPECT_TRUE(problem_names_pointer(reply.json, "/approach_mm"));
   EXPECT_TRUE(problem_names_pointer(reply.json, "/entry/radius_mm"));
   EXPECT_EQ(reply.json["errors"].size(), 3U) << reply.body;
-  EXPECT_EQ(reply.json.value("detail", std::string()), "cutter_diameter_mm must be > 0 (and 2 more)");
+  EXPECT_EQ(reply.json.value("detail", std::string()),
+            "cutter_diameter_mm must be > 0 (and 2 more)");
 }
 
 TEST(BadInput, UnknownFieldsAreRejectedAtAnyLevel) {
@@ -198,8 +203,9 @@ TEST(BadInput, TeethMustBeAWholeNumber) {
 }
 
 TEST(BadInput, InvalidUtf8InAKeyStillGetsAProblemBody) {
-  const JsonReply reply = post(kEntry, "{\"cutter_diameter_mm\": 20, \"\xff\xfe\": 1, "
-                                       "\"entry\": {\"contour\": \"straight\", \"width_mm\": 60}}");
+  const JsonReply reply = post(kEntry,
+                               "{\"cutter_diameter_mm\": 20, \"\xff\xfe\": 1, "
+                               "\"entry\": {\"contour\": \"straight\", \"width_mm\": 60}}");
   EXPECT_GE(reply.status, 400);
   EXPECT_LT(reply.status, 500);
   EXPECT_EQ(reply.content_type, "application/problem+json");

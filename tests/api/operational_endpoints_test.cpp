@@ -46,12 +46,15 @@ TEST(Operational, MetricsCountRequestsByRouteAndStatus) {
   const JsonReply reply = get("/metrics");
   EXPECT_EQ(reply.status, 200);
   EXPECT_NE(reply.content_type.find("text/plain"), std::string::npos);
-  EXPECT_NE(reply.body.find(
-                R"(cutcalc_http_requests_total{route="/v1/entry-length",method="POST",status="400"})"),
-            std::string::npos)
+  EXPECT_NE(
+      reply.body.find(
+          R"(cutcalc_http_requests_total{route="/v1/entry-length",method="POST",status="400"})"),
+      std::string::npos)
       << reply.body;
-  EXPECT_NE(reply.body.find(R"(cutcalc_http_request_duration_seconds_bucket{route="/v1/entry-length",le="+Inf"})"),
-            std::string::npos);
+  EXPECT_NE(
+      reply.body.find(
+          R"(cutcalc_http_request_duration_seconds_bucket{route="/v1/entry-length",le="+Inf"})"),
+      std::string::npos);
   EXPECT_NE(reply.body.find("cutcalc_http_requests_in_flight"), std::string::npos);
 }
 
@@ -69,7 +72,8 @@ TEST(Operational, RequestIdIsEchoedWhenSafeAndGeneratedOtherwise) {
 
 TEST(Operational, ProblemBodiesCarryTheRequestIdAndPath) {
   auto client = TestServer::shared().client();
-  const auto reply = client->Post("/v1/entry-length", {{"X-Request-Id", "trace-42"}}, "{", "application/json");
+  const auto reply =
+      client->Post("/v1/entry-length", {{"X-Request-Id", "trace-42"}}, "{", "application/json");
   ASSERT_TRUE(reply);
   const auto body = nlohmann::json::parse(reply->body);
   EXPECT_EQ(body.value("request_id", std::string()), "trace-42");

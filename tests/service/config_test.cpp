@@ -45,9 +45,13 @@ TEST(Config, EnvironmentSetsAndFlagsOverride) {
 }
 
 TEST(Config, InvalidValuesExitWithStatus2AndSayWhy) {
-  for (const auto& args : std::vector<std::vector<std::string>>{
-           {"--port", "70000"}, {"--port", "80x"}, {"--threads", "0"}, {"--log-level", "loud"},
-           {"--log-format", "xml"}, {"--bogus", "1"}, {"--port"}}) {
+  for (const auto& args : std::vector<std::vector<std::string>>{{"--port", "70000"},
+                                                                {"--port", "80x"},
+                                                                {"--threads", "0"},
+                                                                {"--log-level", "loud"},
+                                                                {"--log-format", "xml"},
+                                                                {"--bogus", "1"},
+                                                                {"--port"}}) {
     const ConfigOutcome outcome = parse(args);
     EXPECT_FALSE(outcome.config) << args[0];
     EXPECT_EQ(outcome.exit_code, 2) << args[0];

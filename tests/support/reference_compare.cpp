@@ -60,7 +60,8 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 
 }  // namespace
 
-std::vector<std::string> compare_subset(const nlohmann::json& expected, const nlohmann::json& actual,
+std::vector<std::string> compare_subset(const nlohmann::json& expected,
+                                        const nlohmann::json& actual,
                                         const ToleranceFn& tolerance) {
   std::vector<std::string> mismatches;
   compare_at(expected, actual, "", "", tolerance, mismatches);

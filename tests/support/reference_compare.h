@@ -15,8 +15,8 @@ namespace cutcalc::testing {
 using ToleranceFn = std::function<double(const std::string& key, double want)>;
 
 // Every mismatch as "pointer: why"; empty when `actual` matches `expected`.
-std::vector<std::string> compare_subset(const nlohmann::json& expected, const nlohmann::json& actual,
-                                        const ToleranceFn& tolerance);
+std::vector<std::string> compare_subset(const nlohmann::json& expected,
+                                        const nlohmann::json& actual, const ToleranceFn& tolerance);
 
 // Tolerance rule of entry-length.json and main-time.json: abs_min for *_time_min keys and
 // main_time_min, abs_mm for every other number.

@@ -57,9 +57,8 @@ TEST_P(EntryReferenceCase, ServiceAnswersAsTheReference) {
     EXPECT_TRUE(problem_names_pointer(reply.json, expect.at("pointer").get<std::string>()))
         << "expected an error at pointer \"" << expect.at("pointer").get<std::string>() << "\"";
   }
-  for (const std::string& violation :
-       contract().check_response("post", reference.endpoint, reply.status, reply.content_type,
-                                 reply.json)) {
+  for (const std::string& violation : contract().check_response(
+           "post", reference.endpoint, reply.status, reply.content_type, reply.json)) {
     ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
   }
 }

@@ -24,12 +24,13 @@ class ExtremeNumbers {
 
   double any() {
     static constexpr std::array<double, 16> kSpecial = {
-        0.0, -0.0, 1e-300, 1e-9, 0.001, 0.5, 1.0, 2.0, 45.0, 90.0, 179.999, 180.0,
-        999999.999, 1e6, -1e6, 1e300};
+        0.0,  -0.0, 1e-300,  1e-9,  0.001,      0.5, 1.0,  2.0,
+        45.0, 90.0, 179.999, 180.0, 999999.999, 1e6, -1e6, 1e300};
     std::uniform_int_distribution<int> pick(0, 3);
     switch (pick(engine_)) {
       case 0:
-        return kSpecial[std::uniform_int_distribution<std::size_t>(0, kSpecial.size() - 1)(engine_)];
+        return kSpecial[std::uniform_int_distribution<std::size_t>(0,
+                                                                   kSpecial.size() - 1)(engine_)];
       case 1:
         return std::uniform_real_distribution<double>(-200.0, 200.0)(engine_);
       case 2:
@@ -68,10 +69,11 @@ const test_support::OpenApiContract& contract() {
 }
 
 // Every number under a key ending in _mm or _min (lengths and times) that must not be negative.
-void expect_no_negative_lengths(const json& value, const std::string& key, const std::string& body) {
+void expect_no_negative_lengths(const json& value, const std::string& key,
+                                const std::string& body) {
   if (value.is_number()) {
-    const bool signed_coordinate = key == "x_mm" || key == "y_mm" || key == "offset_mm" ||
-                                   key == "axis_y_mm";
+    const bool signed_coordinate =
+        key == "x_mm" || key == "y_mm" || key == "offset_mm" || key == "axis_y_mm";
     if (!signed_coordinate) {
       EXPECT_GE(value.get<double>(), 0.0) << key << " in " << body;
     }
@@ -90,7 +92,8 @@ void check(const char* path, JsonHandler handler, const json& request, int& answ
   const std::string body = request.dump();
   const ApiResponse response = run_json_endpoint({path, "application/json", body, "fuzz"}, handler);
   ASSERT_TRUE(response.status == 200 || response.status == 422)
-      << response.status << " for " << body << "\n" << response.body;
+      << response.status << " for " << body << "\n"
+      << response.body;
   const json parsed = json::parse(response.body);
   ASSERT_TRUE(all_numbers_finite(parsed)) << body;
   if (response.status == 200) {
@@ -142,9 +145,9 @@ json plausible_main_time(ExtremeNumbers& numbers, std::mt19937_64& engine) {
                     {"width_of_cut_mm", cut},
                     {"depth_mm", 5.0 * unit(engine) + 0.1},
                     {"depth_of_cut_mm", 0.5 + unit(engine)}}}};
-  static constexpr std::array<const char*, 6> kTargets = {
-      "cutter_diameter_mm", "feed_per_tooth_mm", "length_mm", "spindle_speed_rpm", "approach_mm",
-      "overrun_mm"};
+  static constexpr std::array<const char*, 6> kTargets = {"cutter_diameter_mm", "feed_per_tooth_mm",
+                                                          "length_mm",          "spindle_speed_rpm",
+                                                          "approach_mm",        "overrun_mm"};
   const char* target = kTargets[std::uniform_int_distribution<std::size_t>(0, 5)(engine)];
   request[target] = numbers.any();
   if (numbers.coin()) {

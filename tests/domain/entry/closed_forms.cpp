@@ -71,7 +71,8 @@ std::optional<Band> steady_band(double r, double K, double lo, double hi) {
   return band;
 }
 
-// ---- 6.1 -------------------------------------------------------------------------------------------
+// ---- 6.1
+// -------------------------------------------------------------------------------------------
 
 StraightCase straight90_case(double r, double h, double K) {
   const double k = std::abs(K);
@@ -113,7 +114,8 @@ std::optional<ExitForm> straight90_exit(double D, double B, double K) {
   return ExitForm{root_diff(r, m), h + K};  // E13 perpendicular exit
 }
 
-// ---- 6.2 -------------------------------------------------------------------------------------------
+// ---- 6.2
+// -------------------------------------------------------------------------------------------
 
 std::optional<EntryForm> straight_entry(double D, double B, double K, double alpha_deg,
                                         double approach) {
@@ -159,8 +161,8 @@ std::optional<EntryForm> straight_entry_band_inside(double D, double B, double K
   const double abs_cos = alpha_deg == 90.0 ? 0.0 : std::abs(std::cos(a));
   const double cot = cot_deg(alpha_deg);
   EntryForm form;
-  form.engagement_mm = r * (1.0 + abs_cos) / sin_a;           // E15
-  form.start_x_mm = approach + r / sin_a - (h + K) * cot;     // E15
+  form.engagement_mm = r * (1.0 + abs_cos) / sin_a;        // E15
+  form.start_x_mm = approach + r / sin_a - (h + K) * cot;  // E15
   form.start_y_mm = h + K;
   form.steady_width_mm = 2.0 * r;
   form.saturation_x_mm = form.engagement_mm + approach - form.start_x_mm;
@@ -181,7 +183,8 @@ std::optional<ExitForm> straight_exit(double D, double B, double K, double alpha
   return ExitForm{-phi_max, h + K};
 }
 
-std::optional<ExitForm> straight_exit_band_inside(double D, double B, double K, double alpha_x_deg) {
+std::optional<ExitForm> straight_exit_band_inside(double D, double B, double K,
+                                                  double alpha_x_deg) {
   const double r = D / 2.0;
   const double h = B / 2.0;
   if (!(std::abs(K) + r <= h)) {
@@ -191,7 +194,8 @@ std::optional<ExitForm> straight_exit_band_inside(double D, double B, double K, 
   return ExitForm{-(h + K) * cot - r * std::abs(cot), h + K};  // E16 band inside
 }
 
-// ---- 6.3 -------------------------------------------------------------------------------------------
+// ---- 6.3
+// -------------------------------------------------------------------------------------------
 
 ConvexCase convex_full_case(double r, double R, double K) {
   const double k = std::abs(K);
@@ -300,7 +304,8 @@ std::optional<ExitForm> convex_exit(double D, double R, double B, double K) {
   return convex_exit_on(D, R, K, -h, h);
 }
 
-// ---- 6.4 -------------------------------------------------------------------------------------------
+// ---- 6.4
+// -------------------------------------------------------------------------------------------
 
 namespace {
 
@@ -369,7 +374,8 @@ std::optional<ExitForm> concave_exit(double D, double R, double B, double K) {
   return ExitForm{-phi_max, K};
 }
 
-// ---- 6.5 -------------------------------------------------------------------------------------------
+// ---- 6.5
+// -------------------------------------------------------------------------------------------
 
 std::optional<ExitForm> wall_exit(double D, double B, double K) {
   const double r = D / 2.0;

@@ -4,8 +4,8 @@
 // domain/entry/*.cpp, which evaluates the unified formula E10-E12).
 //
 // Internal frame (spec section 3): x along the feed (+ downstream), y lateral, y = 0 the strip's
-// symmetry line (straight, concave, wall) or the arc axis (both arcs). The cutter axis runs at y = K.
-// Every function returns std::nullopt when the cutter band misses the workpiece (E2: W <= 0,
+// symmetry line (straight, concave, wall) or the arc axis (both arcs). The cutter axis runs at y =
+// K. Every function returns std::nullopt when the cutter band misses the workpiece (E2: W <= 0,
 // tangency included).
 
 #include <optional>
@@ -43,14 +43,16 @@ struct ExitForm {
   double end_y_mm = 0.0;  // Y_k (section 3)
 };
 
-// ---- 6.1 straight edge, alpha = 90 (E13) ----------------------------------------------------------
+// ---- 6.1 straight edge, alpha = 90 (E13)
+// ----------------------------------------------------------
 enum class StraightCase { S1, S2, S3, S4 };
 // Sub-case of the table in 6.1 (assumes contact).
 StraightCase straight90_case(double r, double h, double K);
 std::optional<EntryForm> straight90_entry(double D, double B, double K, double approach);
 std::optional<ExitForm> straight90_exit(double D, double B, double K);
 
-// ---- 6.2 straight edge at any angle (E14-E16) -------------------------------------------------------
+// ---- 6.2 straight edge at any angle (E14-E16)
+// -------------------------------------------------------
 std::optional<EntryForm> straight_entry(double D, double B, double K, double alpha_deg,
                                         double approach);  // E14
 // E15; only meaningful when |K| + r <= h (returns nullopt otherwise).
@@ -60,7 +62,8 @@ std::optional<ExitForm> straight_exit(double D, double B, double K, double alpha
 // E16 band-inside form; nullopt unless |K| + r <= h.
 std::optional<ExitForm> straight_exit_band_inside(double D, double B, double K, double alpha_x_deg);
 
-// ---- 6.3 convex arc (E17-E19) -----------------------------------------------------------------------
+// ---- 6.3 convex arc (E17-E19)
+// -----------------------------------------------------------------------
 enum class ConvexCase { A, B, C, D };
 // Case of E18 (full width), assuming contact.
 ConvexCase convex_full_case(double r, double R, double K);
@@ -77,13 +80,15 @@ std::optional<EntryForm> convex_entry_on(double D, double R, double K, double lo
                                          double approach);
 std::optional<ExitForm> convex_exit_on(double D, double R, double K, double lo, double hi);
 
-// ---- 6.4 concave arc (E20-E21) ----------------------------------------------------------------------
+// ---- 6.4 concave arc (E20-E21)
+// ----------------------------------------------------------------------
 std::optional<EntryForm> concave_entry(double D, double R, double B, double K, double approach);
 std::optional<ExitForm> concave_exit(double D, double R, double B, double K);
 // True when the maximum of psi (E20) is at the interior point y_c rather than at a band end.
 bool concave_entry_max_is_interior(double D, double R, double B, double K);
 
-// ---- 6.5 wall exit (E22) ----------------------------------------------------------------------------
+// ---- 6.5 wall exit (E22)
+// ----------------------------------------------------------------------------
 std::optional<ExitForm> wall_exit(double D, double B, double K);
 
 }  // namespace cutcalc::test::entry_oracle

@@ -57,7 +57,8 @@ EntryLengthResult convex_entry_ok(double D, double K, double R) {
 
 }  // namespace
 
-// ---- E18 full width, cases A-D ---------------------------------------------------------------------
+// ---- E18 full width, cases A-D
+// ---------------------------------------------------------------------
 
 TEST(EntryLengthConvexArc, CaseASmallCutterInsideTheArc) {
   // T2 row 3: D = 20, K = 15, R = 50, exit on the same arc, L = 200.
@@ -214,10 +215,10 @@ TEST(EntryLengthConvexArc, CasesJoinContinuously) {
   // (each side follows its own formula, and the values close in on the join value).
   struct Join {
     const char* name;
-    double R, r, k;      // a point exactly on the join
+    double R, r, k;  // a point exactly on the join
     Full (*below)(double, double, double, double);
     Full (*above)(double, double, double, double);
-    bool vary_k;         // the join is crossed by moving k (else by moving r)
+    bool vary_k;  // the join is crossed by moving k (else by moving r)
   };
   const Join joins[] = {
       {"A/B: k + r = R", 20.0, 8.0, 12.0, case_a, case_b, true},
@@ -257,10 +258,10 @@ TEST(EntryLengthConvexArc, SymmetricInOffset) {
   for (double R : {5.0, 20.0, 50.0}) {
     for (double D : {6.0, 16.0, 40.0, 90.0}) {
       for (double K : {0.75, 4.0, 11.0, 24.0, 40.0}) {
-        const auto plus = compute_entry_length(
-            entry_exit(D, K, convex_contour(R), convex_contour(R), 500.0));
-        const auto minus = compute_entry_length(
-            entry_exit(D, -K, convex_contour(R), convex_contour(R), 500.0));
+        const auto plus =
+            compute_entry_length(entry_exit(D, K, convex_contour(R), convex_contour(R), 500.0));
+        const auto minus =
+            compute_entry_length(entry_exit(D, -K, convex_contour(R), convex_contour(R), 500.0));
         ASSERT_EQ(plus.ok(), minus.ok()) << "R=" << R << " D=" << D << " K=" << K;
         if (!plus.ok()) {
           EXPECT_EQ(plus.error().code, ErrorCode::no_contact);
@@ -282,8 +283,8 @@ TEST(EntryLengthConvexArc, SymmetricInOffset) {
 
 TEST(EntryLengthConvexArc, LargeRadiusTendsToTheStraightEdge) {
   // Section 11 (H15): R = 1e5, r = 10 -> L_vr1 -> r (straight S1), X_n -> L_pod + r, X_k -> 0.
-  const auto res = compute_entry_length(
-      entry_exit(20.0, 0.0, convex_contour(1e5), convex_contour(1e5), 100.0));
+  const auto res =
+      compute_entry_length(entry_exit(20.0, 0.0, convex_contour(1e5), convex_contour(1e5), 100.0));
   ASSERT_TRUE(res.ok()) << outcome(res);
   const auto& v = res.value();
   EXPECT_NEAR(v.engagement_length_mm, 10.0, 1e-3);
@@ -346,7 +347,8 @@ TEST(EntryLengthConvexArc, PartialWidthWithTheBandInsideEqualsFullWidth) {
   EXPECT_NEAR(partial.value().engagement_length_mm, full.value().engagement_length_mm, kTol);
   EXPECT_NEAR(partial.value().start.x_mm, full.value().start.x_mm, kTol);
   // An explicit width_mm = 2R is the full arc.
-  const auto explicit_full = compute_entry_length(entry_only(90.0, 12.0, convex_contour(20.0, 40.0)));
+  const auto explicit_full =
+      compute_entry_length(entry_only(90.0, 12.0, convex_contour(20.0, 40.0)));
   const auto implicit_full = compute_entry_length(entry_only(90.0, 12.0, convex_contour(20.0)));
   ASSERT_TRUE(explicit_full.ok() && implicit_full.ok());
   EXPECT_NEAR(explicit_full.value().engagement_length_mm,

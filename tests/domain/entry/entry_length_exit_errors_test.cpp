@@ -31,7 +31,8 @@ void expect_error(const R& res, ErrorCode code, const char* what) {
 
 }  // namespace
 
-// ---- 6.5 wall exit -------------------------------------------------------------------------------
+// ---- 6.5 wall exit
+// -------------------------------------------------------------------------------
 
 TEST(EntryLengthWallExit, StopsWithThePeripheryAtTheWall) {
   // D = 20, B = 60, K = 0, L = 100: X_k = r = 10, L_per = 0 -> L_rx = 100 + 12 - 10 = 102.
@@ -68,12 +69,13 @@ TEST(EntryLengthWallExit, EndYIsMeasuredFromTheSideEdge) {
               100.0 + 4.0 + res.value().start.x_mm - 10.0 + 0.0, kTol);
 }
 
-// ---- 6.6 / E23: stroke shorter than the entry -------------------------------------------------------
+// ---- 6.6 / E23: stroke shorter than the entry
+// -------------------------------------------------------
 
 TEST(EntryLengthErrors, StrokeEndingExactlyAtSaturationIsAccepted) {
   // Wall exit, S1: x_cs = 0, X_k = r = 10; L = 10, L1 = 0 -> steady travel exactly 0 (not < 0).
-  const auto res = compute_entry_length(
-      entry_exit(20.0, 0.0, straight_contour(60.0), wall_contour(60.0), 10.0));
+  const auto res =
+      compute_entry_length(entry_exit(20.0, 0.0, straight_contour(60.0), wall_contour(60.0), 10.0));
   ASSERT_TRUE(res.ok()) << outcome(res);
   ASSERT_TRUE(res.value().exit.has_value());
   EXPECT_NEAR(res.value().exit->working_stroke_mm, res.value().entry_length_mm, kTol);
@@ -81,9 +83,9 @@ TEST(EntryLengthErrors, StrokeEndingExactlyAtSaturationIsAccepted) {
 }
 
 TEST(EntryLengthErrors, StrokeShorterThanEntryIsRejected) {
-  expect_error(compute_entry_length(
-                   entry_exit(20.0, 0.0, straight_contour(60.0), wall_contour(60.0), 9.5)),
-               ErrorCode::stroke_shorter_than_entry, "wall, L = 9.5");
+  expect_error(
+      compute_entry_length(entry_exit(20.0, 0.0, straight_contour(60.0), wall_contour(60.0), 9.5)),
+      ErrorCode::stroke_shorter_than_entry, "wall, L = 9.5");
   // With a perpendicular exit the steady travel is never negative (x_cs = -X_k for alpha = 90), so
   // use an exit that ends downstream of its origin: alpha_x = 150 (cot < 0), B = 60, K = 0, r = 10:
   // E16 band inside X_k = -(h + K) cot - r |cot| = 20 sqrt(3); steady travel = L + 2 - 0 - X_k.
@@ -98,7 +100,8 @@ TEST(EntryLengthErrors, StrokeShorterThanEntryIsRejected) {
   EXPECT_TRUE(ok.ok()) << outcome(ok);
 }
 
-// ---- section 8: combination errors -------------------------------------------------------------------
+// ---- section 8: combination errors
+// -------------------------------------------------------------------
 
 TEST(EntryLengthErrors, NoContactForEveryContour) {
   expect_error(compute_entry_length(entry_only(20.0, 30.0, straight_contour(40.0))),
@@ -111,14 +114,14 @@ TEST(EntryLengthErrors, NoContactForEveryContour) {
                ErrorCode::no_contact, "partial convex tangency at h = 15");
   expect_error(compute_entry_length(entry_only(10.0, 15.0, concave_contour(12.0, 20.0))),
                ErrorCode::no_contact, "concave tangency");
-  expect_error(compute_entry_length(entry_exit(20.0, 30.0, straight_contour(40.0),
-                                               wall_contour(40.0), 100.0)),
+  expect_error(compute_entry_length(
+                   entry_exit(20.0, 30.0, straight_contour(40.0), wall_contour(40.0), 100.0)),
                ErrorCode::no_contact, "with a wall exit");
 }
 
 TEST(EntryLengthErrors, ExitWidthMustEqualEntryWidth) {
-  expect_error(compute_entry_length(entry_exit(20.0, 0.0, straight_contour(40.0),
-                                               straight_contour(50.0), 100.0)),
+  expect_error(compute_entry_length(
+                   entry_exit(20.0, 0.0, straight_contour(40.0), straight_contour(50.0), 100.0)),
                ErrorCode::exit_width_mismatch, "straight 40 -> straight 50");
   expect_error(compute_entry_length(
                    entry_exit(20.0, 0.0, convex_contour(20.0), straight_contour(41.0), 100.0)),
@@ -126,15 +129,14 @@ TEST(EntryLengthErrors, ExitWidthMustEqualEntryWidth) {
   expect_error(compute_entry_length(
                    entry_exit(20.0, 0.0, straight_contour(40.0), convex_contour(25.0), 100.0)),
                ErrorCode::exit_width_mismatch, "straight 40 -> convex 2R = 50");
-  expect_error(compute_entry_length(
-                   entry_exit(20.0, 0.0, straight_contour(40.0), wall_contour(40.0 * (1.0 + 1e-7)),
-                              100.0)),
+  expect_error(compute_entry_length(entry_exit(20.0, 0.0, straight_contour(40.0),
+                                               wall_contour(40.0 * (1.0 + 1e-7)), 100.0)),
                ErrorCode::exit_width_mismatch, "relative difference 1e-7 > 1e-9");
 }
 
 TEST(EntryLengthErrors, ExitWidthComparisonHasRelativeToleranceOf1e9) {
-  const auto res = compute_entry_length(entry_exit(
-      20.0, 0.0, straight_contour(40.0), straight_contour(40.0 * (1.0 + 1e-12)), 100.0));
+  const auto res = compute_entry_length(
+      entry_exit(20.0, 0.0, straight_contour(40.0), straight_contour(40.0 * (1.0 + 1e-12)), 100.0));
   EXPECT_TRUE(res.ok()) << outcome(res);
   const auto arc = compute_entry_length(
       entry_exit(20.0, 0.0, straight_contour(40.0), convex_contour(20.0), 100.0));

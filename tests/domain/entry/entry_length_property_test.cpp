@@ -129,7 +129,9 @@ std::optional<oracle::ExitForm> oracle_exit(const Shape& s, double D, double K) 
 class Random {
  public:
   explicit Random(std::uint64_t seed) : gen_(seed) {}
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(gen_); }
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(gen_);
+  }
   double log_uniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
   bool chance(double p) { return uniform(0.0, 1.0) < p; }
   int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(gen_); }
@@ -292,9 +294,8 @@ void check_value(Tally& tally, const Case& c, const char* field, double got, dou
 // Runs one case through the service and the oracle and records the outcome.
 void check_case(const Case& c, Tally& tally) {
   ++tally.total;
-  const EntryLengthParams params =
-      cutcalc::test::entry_exit(c.D, c.K, to_contour(c.entry), to_contour(c.exit), c.length,
-                                c.approach, c.extra, c.overrun);
+  const EntryLengthParams params = cutcalc::test::entry_exit(
+      c.D, c.K, to_contour(c.entry), to_contour(c.exit), c.length, c.approach, c.extra, c.overrun);
   const auto result = compute_entry_length(params);
 
   const auto entry = oracle_entry(c.entry, c.D, c.K, c.approach);
@@ -567,7 +568,9 @@ TEST(EntryOracle, ClosedFormsMatchSampledDefinition) {
       if (!entry) {
         continue;
       }
-      const auto chord = [&](double y) { return std::sqrt(std::max(0.0, r * r - (y - c.K) * (y - c.K))); };
+      const auto chord = [&](double y) {
+        return std::sqrt(std::max(0.0, r * r - (y - c.K) * (y - c.K)));
+      };
       const auto psi = [&](double y) { return contour_entry_x(c.entry, y) - chord(y); };
       const auto phi = [&](double y) { return contour_exit_x(c.exit, y) - chord(y); };
       const double xc0 = sampled_extremum(psi, a, b, false);
@@ -585,8 +588,8 @@ TEST(EntryOracle, ClosedFormsMatchSampledDefinition) {
       }
       // The full-width table E18/E19 and the general E17/E19 must agree.
       if (c.entry.kind == Kind::convex_full) {
-        const auto general = oracle::convex_entry(c.D, c.entry.radius, c.entry.width, c.K,
-                                                  c.approach);
+        const auto general =
+            oracle::convex_entry(c.D, c.entry.radius, c.entry.width, c.K, c.approach);
         ASSERT_TRUE(general.has_value());
         EXPECT_NEAR(general->engagement_mm, entry->engagement_mm, 1e-9) << describe(c);
         EXPECT_NEAR(general->start_x_mm, entry->start_x_mm, 1e-9) << describe(c);

@@ -21,15 +21,16 @@ using cutcalc::test::entry_only;
 using cutcalc::test::outcome;
 using cutcalc::test::straight_contour;
 
-constexpr double kTol = 1e-9;      // mm, values from closed forms
-constexpr double kSpec3 = 5e-4;    // numbers the spec prints with 3 decimals
-constexpr double kSpec2 = 5e-3;    // numbers the spec prints with 2 decimals
+constexpr double kTol = 1e-9;    // mm, values from closed forms
+constexpr double kSpec3 = 5e-4;  // numbers the spec prints with 3 decimals
+constexpr double kSpec2 = 5e-3;  // numbers the spec prints with 2 decimals
 
 double deg(double d) { return d * std::numbers::pi / 180.0; }
 
 }  // namespace
 
-// ---- 6.1: alpha = 90, sub-cases S1-S4 (E13) -------------------------------------------------------
+// ---- 6.1: alpha = 90, sub-cases S1-S4 (E13)
+// -------------------------------------------------------
 
 TEST(EntryLengthStraight, FullBandInsideStripEntersOverOneRadius) {
   // S1: D = 20, B = 60, K = 0 -> L_vr1 = r, X_n = L_pod + r, perpendicular exit X_k = 0.
@@ -65,7 +66,8 @@ TEST(EntryLengthStraight, CutterOverhangingSideEdgeStillEntersOverOneRadius) {
 }
 
 TEST(EntryLengthStraight, CutterWiderThanStripSaturatesBeforeOneRadius) {
-  // S2 (T1 row 2): D = 50, B = 25, K = 0: L_vr1 = r - sqrt(r^2 - (h + k)^2), X_k = sqrt(r^2 - (h+k)^2).
+  // S2 (T1 row 2): D = 50, B = 25, K = 0: L_vr1 = r - sqrt(r^2 - (h + k)^2), X_k = sqrt(r^2 -
+  // (h+k)^2).
   const double r = 25.0;
   const double q = std::sqrt(r * r - 12.5 * 12.5);
   const auto res = compute_entry_length(
@@ -293,8 +295,8 @@ TEST(EntryLengthStraight, ApproachShiftsOnlyStartAndEntryLength) {
 TEST(EntryLengthStraight, NinetyDegreeCotangentIsExactlyZero) {
   // cot(90) = 0 exactly (spec 6.2): on a wide strip S1 gives X_n = L_pod + r and X_k = 0 with no
   // rounding residue (cos(pi/2) = 6e-17 would leave ~1e-14 mm here). Exactness is normative.
-  const auto res = compute_entry_length(entry_exit(20.0, 0.0, straight_contour(2000.0, 90.0),
-                                                   straight_contour(2000.0, 90.0), 100.0));
+  const auto res = compute_entry_length(
+      entry_exit(20.0, 0.0, straight_contour(2000.0, 90.0), straight_contour(2000.0, 90.0), 100.0));
   ASSERT_TRUE(res.ok()) << outcome(res);
   EXPECT_NEAR(res.value().start.x_mm, 12.0, 0.0);
   EXPECT_NEAR(res.value().engagement_length_mm, 10.0, 0.0);
@@ -320,7 +322,8 @@ TEST(EntryLengthStraight, BandEndsUseTheExactHalfChordArgument) {
   }
 }
 
-// ---- 6.2: inclined edges (E14-E16) ----------------------------------------------------------------
+// ---- 6.2: inclined edges (E14-E16)
+// ----------------------------------------------------------------
 
 TEST(EntryLengthInclined, SixtyDegreesPositiveOffsetMatchesSpecSection11) {
   // alpha = 60, B = 40, D = 30, K = +10: L_vr1 = 11.914 (section 11).

@@ -21,7 +21,8 @@ inline entry_api::Contour straight_contour(double width, double angle_deg = 90.0
   return c;
 }
 
-inline entry_api::Contour convex_contour(double radius, std::optional<double> width = std::nullopt) {
+inline entry_api::Contour convex_contour(double radius,
+                                         std::optional<double> width = std::nullopt) {
   entry_api::Contour c;
   c.kind = entry_api::ContourKind::convex_arc;
   c.radius_mm = radius;

@@ -28,8 +28,8 @@ using cutcalc::test::outcome;
 using cutcalc::test::straight_contour;
 using cutcalc::test::wall_contour;
 
-constexpr double kMm = 1e-9;      // mm, rpm, mm/min from exact expressions
-constexpr double kMin = 1e-12;    // min from exact expressions
+constexpr double kMm = 1e-9;       // mm, rpm, mm/min from exact expressions
+constexpr double kMin = 1e-12;     // min from exact expressions
 constexpr double kPrinted = 1e-9;  // numbers the spec prints to 10 decimals (rounding 5e-11)
 
 // Section 14: D = 50, z = 4, n = 1000, S_z = 0.1, f = 0.5, L = 120, L1 = 0, L_pod = 2, L_per = 2,
@@ -78,9 +78,10 @@ void expect_time_identities(const MainTimeResult& v) {
   double steady = 0.0;
   for (std::size_t i = 0; i < v.lateral_passes.size(); ++i) {
     const auto& p = v.lateral_passes[i];
-    EXPECT_NEAR(p.entry_time_min, p.entry_length_mm / v.entry_feed_mm_per_min, kMin) << "pass " << i;
-    EXPECT_NEAR(p.steady_time_min,
-                (p.working_stroke_mm - p.entry_length_mm) / v.feed_mm_per_min, kMin)
+    EXPECT_NEAR(p.entry_time_min, p.entry_length_mm / v.entry_feed_mm_per_min, kMin)
+        << "pass " << i;
+    EXPECT_NEAR(p.steady_time_min, (p.working_stroke_mm - p.entry_length_mm) / v.feed_mm_per_min,
+                kMin)
         << "pass " << i;
     EXPECT_NEAR(p.time_min, p.entry_time_min + p.steady_time_min, kMin) << "pass " << i;
     entry += p.entry_time_min;
@@ -100,7 +101,8 @@ void expect_error(const MainTimeParams& p, ErrorCode code, const char* what) {
 
 }  // namespace
 
-// ---- section 14: the worked example, every number --------------------------------------------------
+// ---- section 14: the worked example, every number
+// --------------------------------------------------
 
 TEST(MainTimeWorkedExample, Feeds) {
   const auto v = main_time_ok(worked_example());
@@ -175,7 +177,8 @@ TEST(MainTimeWorkedExample, Totals) {
   expect_time_identities(v);
 }
 
-// ---- 7.1: numbers of passes ---------------------------------------------------------------------------
+// ---- 7.1: numbers of passes
+// ---------------------------------------------------------------------------
 
 TEST(MainTimePasses, IntegerRatioGivesEqualPassesNotAZeroLastPass) {
   // Errata: the printed last pass H - t floor(H/t) is 0 for H = 6, t0 = 2; E25 gives 2, 2, 2.
@@ -207,8 +210,8 @@ TEST(MainTimePasses, LastDepthPassIsTheRemainder) {
 }
 
 TEST(MainTimePasses, CeilGuardAbsorbsDivisionRounding) {
-  // 8.4 / 1.2 = 7.000000000000001 in doubles: ceil without the 1e-9 guard would give 8 passes with a
-  // last pass of ~1e-15 mm. E24: ceil(H/t - 1e-9) = 7, the last pass H - 6 t0 = 1.2.
+  // 8.4 / 1.2 = 7.000000000000001 in doubles: ceil without the 1e-9 guard would give 8 passes with
+  // a last pass of ~1e-15 mm. E24: ceil(H/t - 1e-9) = 7, the last pass H - 6 t0 = 1.2.
   ASSERT_GT(8.4 / 1.2, 7.0);
   auto p = single_pass();
   p.allowance.depth_mm = 8.4;
@@ -281,7 +284,8 @@ TEST(MainTimePasses, LateralPlacementOfThreePasses) {
               kMin);
 }
 
-// ---- 7.2: lateral placement with one pass; inclined and arc multi-pass ---------------------------------
+// ---- 7.2: lateral placement with one pass; inclined and arc multi-pass
+// ---------------------------------
 
 TEST(MainTimeLateral, SinglePassUsesOffsetAndWholePart) {
   // E26: N1 = 1, K = -5: axis_y = h + K, strip = B, width = W (E2). D = 20, B = 50, v = 150 m/min,
@@ -411,9 +415,9 @@ TEST(MainTimeLateral, InclinedEdgesShiftTheStripOrigins) {
 }
 
 TEST(MainTimeLateral, ConvexArcWithSeveralPassesUsesThePartContour) {
-  // Section 7.2 (inferred, no reference case): arcs with N1 > 1 apply E10/E11 to the part's arc over
-  // [y_ax - r, y_ax + r] intersected with [Y_(i-1) - h, h]; start/end Y from the arc axis.
-  // R = 30 (B = 60), D = 20, H1 = 60, t = 20: axes (part frame) 10, 30, 50 -> y_ax = -20, 0, 20.
+  // Section 7.2 (inferred, no reference case): arcs with N1 > 1 apply E10/E11 to the part's arc
+  // over [y_ax - r, y_ax + r] intersected with [Y_(i-1) - h, h]; start/end Y from the arc axis. R =
+  // 30 (B = 60), D = 20, H1 = 60, t = 20: axes (part frame) 10, 30, 50 -> y_ax = -20, 0, 20.
   MainTimeParams p = single_pass();
   p.offset_mm.reset();
   p.length_mm = 150.0;
@@ -445,7 +449,8 @@ TEST(MainTimeLateral, ConvexArcWithSeveralPassesUsesThePartContour) {
   expect_time_identities(v);
 }
 
-// ---- 7.3: speed and feeds ---------------------------------------------------------------------------
+// ---- 7.3: speed and feeds
+// ---------------------------------------------------------------------------
 
 TEST(MainTimeFeeds, CuttingSpeedGivesSpindleSpeedE30) {
   MainTimeParams p = single_pass();
@@ -483,7 +488,8 @@ TEST(MainTimeFeeds, DefaultEntryFeedFactorIsOneHalf) {
 }
 
 TEST(MainTimeFeeds, EntryFeedPerToothWithCuttingSpeed) {
-  // S_m1 = n z S_z1 (E33): v = 200, D = 32, z = 3, S_z = 0.08, S_z1 = 0.03; convex arc R = 25, K = 6.
+  // S_m1 = n z S_z1 (E33): v = 200, D = 32, z = 3, S_z = 0.08, S_z1 = 0.03; convex arc R = 25, K
+  // = 6.
   MainTimeParams p = single_pass();
   p.cutter_diameter_mm = 32.0;
   p.teeth = 3;
@@ -518,7 +524,8 @@ TEST(MainTimeFeeds, EntryFeedPerToothEqualToFeedPerToothIsAccepted) {
   EXPECT_NEAR(v.entry_feed_mm_per_min, v.feed_mm_per_min, kMm);
 }
 
-// ---- 7.4: times ---------------------------------------------------------------------------------------
+// ---- 7.4: times
+// ---------------------------------------------------------------------------------------
 
 TEST(MainTimeTimes, TotalsAreDepthPassesTimesTheLateralSum) {
   // N1 = 3 lateral x N2 = 5 depth passes on an inclined part.
@@ -539,7 +546,8 @@ TEST(MainTimeTimes, TotalsAreDepthPassesTimesTheLateralSum) {
   expect_time_identities(v);
 }
 
-// ---- section 8: errors ------------------------------------------------------------------------------
+// ---- section 8: errors
+// ------------------------------------------------------------------------------
 
 TEST(MainTimeErrors, OffsetWithSeveralPasses) {
   MainTimeParams p = worked_example();
