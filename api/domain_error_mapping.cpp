@@ -31,6 +31,14 @@ const char* pointer_of(domain::ErrorCode code) {
       return "/allowance/width_of_cut_mm";
     case ErrorCode::too_many_depth_passes:
       return "/allowance/depth_of_cut_mm";
+    case ErrorCode::contact_angle_outside_arc:
+      return "/contact_angles_deg";  // to_problem appends the element's index
+    case ErrorCode::target_needs_minor_edge_angle:
+      return "";
+    case ErrorCode::cutter_not_smaller_than_bore:
+      return "/cutter_radius_mm";
+    case ErrorCode::bore_feed_too_large:
+      return "";
     case ErrorCode::not_converged:
       break;
   }
@@ -47,9 +55,11 @@ Problem to_problem(const domain::DomainError& error) {
     return Problem{
         ProblemKind::internal_error, "the calculation failed; this is a bug in cutcalc", {}};
   }
-  return Problem{ProblemKind::impossible_input,
-                 error.detail,
-                 {FieldError{pointer_of(error.code), error.detail}}};
+  std::string pointer = pointer_of(error.code);
+  if (error.index) {
+    pointer += "/" + std::to_string(*error.index);
+  }
+  return Problem{ProblemKind::impossible_input, error.detail, {FieldError{pointer, error.detail}}};
 }
 
 }  // namespace cutcalc::api

@@ -24,6 +24,7 @@
 #include <httplib.h>
 
 #include "service/elastic_thread_pool.h"
+#include "service/http_connection.h"
 
 namespace cutcalc::service {
 
@@ -38,39 +39,49 @@ struct HttpTuning {
   int listen_backlog = 1024;
   bool tcp_nodelay = true;
   // Added with the elastic pool and TunedServer:
-  std::size_t max_pending_connections = 1024;  // accepted, waiting for a thread (at the cap);
-                                               // beyond, accept() pauses: the backlog holds them
+  bool event_loop = true;                    // TunedServer: serve from epoll loops (see below);
+                                             // false: one blocking thread per connection
+  std::size_t event_loop_threads = 0;        // 0: one per core
+  std::size_t max_pending_connections = 1024;  // waiting for a thread at the cap; beyond, accept()
+                                               // pauses (blocking mode) or the request gets 503
   long idle_thread_timeout_ms = 30000;       // threads above worker_threads exit when idle this long
   long request_timeout_ms = 10000;           // TunedServer: one whole request (head + body) must
                                              // arrive within this, from its first byte (slowloris)
-  std::size_t shed_keep_alive_at_busy_threads = 0;  // TunedServer: from this many busy threads
-                                             // on, idle keep-alive connections are closed and
-                                             // responses say Connection: close; 0: 3/4 of the cap
+  std::size_t shed_keep_alive_at_busy_threads = 0;  // TunedServer, blocking mode: from this many
+                                             // busy threads on, idle keep-alive connections are
+                                             // closed and responses say Connection: close;
+                                             // 0: 3/4 of the cap
 };
 
 // Threads kept ready for `tuning` on this machine (resolves worker_threads == 0).
 std::size_t effective_worker_threads(const HttpTuning& tuning);
+// Event loop threads for `tuning` on this machine (resolves event_loop_threads == 0).
+std::size_t effective_event_loop_threads(const HttpTuning& tuning);
 
-// Counters kept by TunedServer (monotonic, for metrics).
-struct ConnectionCounters {
-  std::atomic<std::uint64_t> connections{0};
-  std::atomic<std::uint64_t> requests{0};
-  std::atomic<std::uint64_t> keep_alive_shed{0};   // idle keep-alive closed under thread pressure
-  std::atomic<std::uint64_t> request_timeouts{0};  // request_timeout_ms exceeded (slowloris)
-};
+class EventLoopEngine;
 
 // httplib::Server with its per-connection loop replaced (it overrides the library's virtual
-// process_and_close_socket, as the library's own SSLServer does) and otherwise unchanged:
-//  - idle keep-alive connections wait in a blocking poll() instead of the library's 10 ms
-//    poll + 1 ms sleep loop (90 wake-ups a second per idle connection);
-//  - when the pool runs short of threads (shed_keep_alive_at_busy_threads), idle keep-alive
-//    connections are closed within 200 ms and responses say Connection: close, so connections
-//    waiting for a thread get one;
-//  - a request's head and body must arrive within request_timeout_ms (slowloris);
-//  - a response goes out in one send() (the library sends headers and body separately), and
-//    input read ahead is kept across the requests of a connection (pipelining).
-// apply_http_tuning() configures it; a TunedServer that was never tuned behaves like
-// httplib::Server with the library's defaults, but with the loop above.
+// process_and_close_socket(), as the library's own SSLServer does); routing, parsing and
+// response writing stay the library's (process_request()).
+//
+// Event-loop mode (HttpTuning::event_loop, the default; service/http_event_loop.h): accepted
+// connections go to epoll loops (one per core); a request that has fully arrived is served on
+// the loop thread; requests needing blocking reads go to a bounded elastic pool of threads
+// (worker_threads .. max_worker_threads) and their connection comes back to the loop after.
+// Idle keep-alive connections and slow clients hold no thread.
+//
+// Blocking mode (event_loop = false): one thread of the elastic pool per connection, as stock
+// httplib, but idle keep-alive connections wait in a blocking poll() instead of the library's
+// 10 ms poll + 1 ms sleep loop (90 wake-ups a second per idle connection), and when the pool
+// runs short of threads (shed_keep_alive_at_busy_threads) idle keep-alive connections are
+// closed within 200 ms and responses say Connection: close, so waiting connections get a thread.
+//
+// Both modes: a request's head and body must arrive within request_timeout_ms (slowloris); a
+// response leaves in one send() (the library sends headers and body separately); input read
+// ahead is kept across the requests of a connection (pipelining).
+//
+// apply_http_tuning() configures it; a TunedServer that was never tuned runs the blocking mode
+// with the library's default settings.
 class TunedServer : public httplib::Server {
  public:
   TunedServer();
@@ -82,18 +93,22 @@ class TunedServer : public httplib::Server {
  private:
   friend void apply_http_tuning(httplib::Server& server, const HttpTuning& tuning);
 
+  void configure(const HttpTuning& tuning);
   bool process_and_close_socket(socket_t sock) override;
+  bool serve_blocking_connection(socket_t sock);
   bool under_pressure() const;
+  bool stopping() const { return svr_sock_ == INVALID_SOCKET; }
 
   std::shared_ptr<PoolLoad> load_;
   ConnectionCounters counters_;
+  std::unique_ptr<EventLoopEngine> engine_;  // event-loop mode
   bool tcp_nodelay_on_accept_ = false;
   long request_timeout_ms_ = 0;  // 0: none
   std::size_t shed_at_busy_threads_ = 0;  // 0: never
 };
 
 // Applies the tuning to a server before it binds: timeouts, keep-alive, payload limit,
-// TCP_NODELAY and the elastic thread pool; for a TunedServer also its connection loop settings.
+// TCP_NODELAY and the elastic thread pool; for a TunedServer also its connection handling.
 void apply_http_tuning(httplib::Server& server, const HttpTuning& tuning);
 
 // Binds host:port with the tuned listen backlog (the library's own is compiled in at 5).

@@ -102,4 +102,3 @@ BENCHMARK(BM_MainTime3x5);
 
 }  // namespace
 
-BENCHMARK_MAIN();
