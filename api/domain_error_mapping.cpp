@@ -39,6 +39,10 @@ const char* pointer_of(domain::ErrorCode code) {
       return "/cutter_radius_mm";
     case ErrorCode::bore_feed_too_large:
       return "";
+    case ErrorCode::tolerance_unreachable:
+      return "/tolerance_mm";
+    case ErrorCode::program_too_large:
+      return "/step_down_mm";
     case ErrorCode::not_converged:
       break;
   }

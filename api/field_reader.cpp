@@ -37,6 +37,10 @@ std::optional<std::string> violated_bound(double value, const Bounds& bounds) {
              format_bound(*bounds.min);
     }
   }
+  if (bounds.smallest_positive && value < *bounds.smallest_positive) {
+    return "must be >= " + format_bound(*bounds.smallest_positive) +
+           " (smaller values are below any machine's resolution)";
+  }
   if (bounds.max) {
     const bool above = bounds.max_inclusive ? value > *bounds.max : value >= *bounds.max;
     if (above) {
@@ -86,11 +90,16 @@ std::optional<double> ObjectReader::optional_number(std::string_view key, const 
   if (value == nullptr) {
     return std::nullopt;
   }
-  if (!value->is_number()) {
+  return check_number(key, *value, bounds);
+}
+
+std::optional<double> ObjectReader::check_number(std::string_view key, const nlohmann::json& value,
+                                                 const Bounds& bounds) {
+  if (!value.is_number()) {
     add_error(key, "must be a number");
     return std::nullopt;
   }
-  const double number = value->get<double>();
+  const double number = value.get<double>();
   if (!std::isfinite(number)) {
     add_error(key, "must be a finite number");
     return std::nullopt;
@@ -117,8 +126,8 @@ double ObjectReader::number_or(std::string_view key, const Bounds& bounds, doubl
 
 std::optional<std::int64_t> ObjectReader::required_integer(std::string_view key, std::int64_t min,
                                                            std::int64_t max) {
-  const auto number =
-      required_number(key, Bounds{static_cast<double>(min), true, static_cast<double>(max), true});
+  const auto number = required_number(
+      key, Bounds{static_cast<double>(min), true, static_cast<double>(max), true, {}});
   if (!number) {
     return std::nullopt;
   }
@@ -127,6 +136,32 @@ std::optional<std::int64_t> ObjectReader::required_integer(std::string_view key,
     return std::nullopt;
   }
   return static_cast<std::int64_t>(*number);
+}
+
+std::optional<std::vector<double>> ObjectReader::optional_number_list(std::string_view key,
+                                                                      const Bounds& bounds,
+                                                                      std::size_t min_items,
+                                                                      std::size_t max_items) {
+  const nlohmann::json* value = find(key);
+  if (value == nullptr) {
+    return std::nullopt;
+  }
+  if (!value->is_array() || value->size() < min_items || value->size() > max_items) {
+    add_error(key, "must be a list of " + std::to_string(min_items) + " to " +
+                       std::to_string(max_items) + " numbers");
+    return std::nullopt;
+  }
+  ObjectReader elements(nullptr, child_pointer(key), *errors_);
+  std::vector<double> numbers;
+  numbers.reserve(value->size());
+  bool all_valid = true;
+  for (std::size_t i = 0; i < value->size(); ++i) {
+    const std::string index = std::to_string(i);
+    const auto number = elements.check_number(index, (*value)[i], bounds);
+    all_valid = all_valid && number.has_value();
+    numbers.push_back(number.value_or(0.0));
+  }
+  return all_valid ? std::optional(std::move(numbers)) : std::nullopt;
 }
 
 std::optional<std::string> ObjectReader::required_choice(

@@ -21,17 +21,26 @@ namespace cutcalc::api {
 // keeps squares and products of lengths finite in doubles.
 inline constexpr double kMaxLengthMm = 1.0e6;
 
+// The smallest positive size, speed or feed accepted: a nanometre is below any machine's
+// resolution, and tiny positive products would underflow to 0 and divide.
+inline constexpr double kSmallestPositive = 1.0e-6;
+
 struct Bounds {
   std::optional<double> min;
   bool min_inclusive = true;
   std::optional<double> max;
   bool max_inclusive = true;
+  std::optional<double> smallest_positive;  // values in (0, this) are refused too
 
-  static Bounds positive(double max = kMaxLengthMm) { return {0.0, false, max, true}; }
-  static Bounds non_negative(double max = kMaxLengthMm) { return {0.0, true, max, true}; }
-  static Bounds magnitude(double max_abs = kMaxLengthMm) { return {-max_abs, true, max_abs, true}; }
-  static Bounds open(double low, double high) { return {low, false, high, false}; }
-  static Bounds left_open(double low, double high) { return {low, false, high, true}; }
+  static Bounds positive(double max = kMaxLengthMm) {
+    return {0.0, false, max, true, kSmallestPositive};
+  }
+  static Bounds non_negative(double max = kMaxLengthMm) { return {0.0, true, max, true, {}}; }
+  static Bounds magnitude(double max_abs = kMaxLengthMm) {
+    return {-max_abs, true, max_abs, true, {}};
+  }
+  static Bounds open(double low, double high) { return {low, false, high, false, {}}; }
+  static Bounds left_open(double low, double high) { return {low, false, high, true, {}}; }
 };
 
 class ObjectReader {
@@ -54,6 +63,13 @@ class ObjectReader {
   std::optional<std::int64_t> required_integer(std::string_view key, std::int64_t min,
                                                std::int64_t max);
 
+  // Absent: nullopt, no error. Otherwise a list of min_items..max_items finite numbers; each bad
+  // element is reported at its own index.
+  std::optional<std::vector<double>> optional_number_list(std::string_view key,
+                                                          const Bounds& bounds,
+                                                          std::size_t min_items,
+                                                          std::size_t max_items);
+
   // A string that must be one of `allowed`.
   std::optional<std::string> required_choice(std::string_view key,
                                              std::initializer_list<std::string_view> allowed);
@@ -71,6 +87,9 @@ class ObjectReader {
 
  private:
   const nlohmann::json* find(std::string_view key);
+  // `value` found at `key` must be a finite number within bounds; else an error at `key`.
+  std::optional<double> check_number(std::string_view key, const nlohmann::json& value,
+                                     const Bounds& bounds);
   std::string child_pointer(std::string_view key) const;
 
   const nlohmann::json* object_ = nullptr;

@@ -9,7 +9,7 @@ namespace {
 
 // 0 < alpha < 180 (spec section 8), and no closer than 0.001 degrees to either end: an edge that
 // near parallel to the feed has a cotangent that overflows any size, and no workpiece has it.
-constexpr Bounds kAngleBounds{0.001, true, 179.999, true};
+const Bounds kAngleBounds{0.001, true, 179.999, true, {}};
 
 std::optional<ContourKind> read_kind(ObjectReader& reader, ContourSide side) {
   const auto name =

@@ -26,11 +26,13 @@ enum class ErrorCode {
   entry_feed_exceeds_feed,        // S_z1 > S_z
   too_many_lateral_passes,        // N1 above the service's limit (a guard, not the model; E24)
   too_many_depth_passes,          // N2 above the service's limit (a guard, not the model; E24)
-  contact_angle_outside_arc,     // |rho_i| > rho_e + 1e-9 deg; DomainError::index = i
+  contact_angle_outside_arc,      // |rho_i| > rho_e + 1e-9 deg; DomainError::index = i
   target_needs_minor_edge_angle,  // target_rz_um with phi1 = 0: Rz = 0 for every feed (R.4)
   cutter_not_smaller_than_bore,   // r >= R (B.5)
-  bore_feed_too_large,           // eps >= 1, alpha >= 180 deg, theta'(0) = 0 or no bracket (B.4)
-  not_converged,                  // a numerical procedure failed: a bug, reported as 500
+  bore_feed_too_large,            // eps >= 1, alpha >= 180 deg, theta'(0) = 0 or no bracket (B.4)
+  tolerance_unreachable,  // polygon arc fit needs more than 1000 biarcs per ellipse arc (P21)
+  program_too_large,      // polygon program over 200 000 arc blocks (section 10)
+  not_converged,          // a numerical procedure failed: a bug, reported as 500
 };
 
 struct DomainError {

@@ -25,8 +25,8 @@ struct ResultantSpeedsParams {
   double tool_radius_mm = 0.0;       // R1 > 0
   double workpiece_radius_mm = 0.0;  // R2 > 0
   std::variant<CenterDistance, FlatDepth> placement;
-  double tool_speed_rpm = 0.0;       // n1 > 0; the tool turns counter-clockwise
-  double workpiece_speed_rpm = 0.0;  // n2 >= 0; its sense follows from `milling` (V6)
+  double tool_speed_rpm = 0.0;              // n1 > 0; the tool turns counter-clockwise
+  double workpiece_speed_rpm = 0.0;         // n2 >= 0; its sense follows from `milling` (V6)
   MillingSense milling = MillingSense::up;  // the sense at the middle of the arc, rho = 0
   double tool_feed_mm_per_min = 0.0;        // v_s1, signed, + away from the workpiece axis
   std::optional<std::vector<double>> contact_angles_deg;  // rho_i; default +rho_e, 0, -rho_e
@@ -34,18 +34,18 @@ struct ResultantSpeedsParams {
 };
 
 struct ContactPointSpeeds {
-  double contact_angle_deg = 0.0;            // rho
-  double contact_radius_mm = 0.0;            // R2' (V4)
-  double contact_polar_angle_deg = 0.0;      // sigma (V5)
-  double tool_speed_m_per_min = 0.0;         // V_T (V8)
-  double workpiece_speed_m_per_min = 0.0;    // v_S2 (V8)
-  double resultant_feed_mm_per_min = 0.0;    // |u_s| (V9)
-  double resultant_speed_m_per_min = 0.0;    // |v_e| (V10)
-  double resultant_angle_deg = 0.0;          // angle from v_T to v_e, CCW + (V11)
-  MillingSense sense = MillingSense::up;     // local milling sense (V12)
-  double kinematic_ratio = 0.0;              // i_k (V13)
-  double normal_speed_m_per_min = 0.0;       // v_N (V14)
-  double along_edge_speed_m_per_min = 0.0;   // along the edge, signed like lambda (V14)
+  double contact_angle_deg = 0.0;           // rho
+  double contact_radius_mm = 0.0;           // R2' (V4)
+  double contact_polar_angle_deg = 0.0;     // sigma (V5)
+  double tool_speed_m_per_min = 0.0;        // V_T (V8)
+  double workpiece_speed_m_per_min = 0.0;   // v_S2 (V8)
+  double resultant_feed_mm_per_min = 0.0;   // |u_s| (V9)
+  double resultant_speed_m_per_min = 0.0;   // |v_e| (V10)
+  double resultant_angle_deg = 0.0;         // angle from v_T to v_e, CCW + (V11)
+  MillingSense sense = MillingSense::up;    // local milling sense (V12)
+  double kinematic_ratio = 0.0;             // i_k (V13)
+  double normal_speed_m_per_min = 0.0;      // v_N (V14)
+  double along_edge_speed_m_per_min = 0.0;  // along the edge, signed like lambda (V14)
 };
 
 struct ResultantSpeedsResult {

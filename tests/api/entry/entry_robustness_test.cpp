@@ -11,7 +11,7 @@
 #include "api/entry/entry_length_endpoint.h"
 #include "api/entry/main_time_endpoint.h"
 #include "api/json_endpoint.h"
-#include "support/openapi_contract.h"
+#include "support/sanity_checks.h"
 
 namespace cutcalc::api {
 namespace {
@@ -63,46 +63,9 @@ class ExtremeNumbers {
   std::mt19937_64 engine_;
 };
 
-const test_support::OpenApiContract& contract() {
-  static const auto loaded = test_support::OpenApiContract::load(CUTCALC_OPENAPI_PATH);
-  return loaded;
-}
-
-// Every number under a key ending in _mm or _min (lengths and times) that must not be negative.
-void expect_no_negative_lengths(const json& value, const std::string& key,
-                                const std::string& body) {
-  if (value.is_number()) {
-    const bool signed_coordinate =
-        key == "x_mm" || key == "y_mm" || key == "offset_mm" || key == "axis_y_mm";
-    if (!signed_coordinate) {
-      EXPECT_GE(value.get<double>(), 0.0) << key << " in " << body;
-    }
-  } else if (value.is_object()) {
-    for (const auto& [name, element] : value.items()) {
-      expect_no_negative_lengths(element, name, body);
-    }
-  } else if (value.is_array()) {
-    for (const auto& element : value) {
-      expect_no_negative_lengths(element, key, body);
-    }
-  }
-}
-
 void check(const char* path, JsonHandler handler, const json& request, int& answered) {
-  const std::string body = request.dump();
-  const ApiResponse response = run_json_endpoint({path, "application/json", body, "fuzz"}, handler);
-  ASSERT_TRUE(response.status == 200 || response.status == 422)
-      << response.status << " for " << body << "\n"
-      << response.body;
-  const json parsed = json::parse(response.body);
-  ASSERT_TRUE(all_numbers_finite(parsed)) << body;
-  if (response.status == 200) {
+  if (testing::expect_sane_answer(path, handler, request) == 200) {
     ++answered;
-    expect_no_negative_lengths(parsed, "", body);
-  }
-  for (const std::string& violation :
-       contract().check_response("post", path, response.status, response.content_type, parsed)) {
-    ADD_FAILURE() << violation << "\nrequest: " << body << "\nresponse: " << response.body;
   }
 }
 
@@ -119,7 +82,7 @@ TEST(EntryRobustness, ExtremeEntryLengthRequestsAre200Or422WithFiniteNumbers) {
       request["length_mm"] = numbers.any();
     }
     check("/v1/entry-length", &entry::handle_entry_length, request, answered);
-    if (HasFatalFailure()) {
+    if (HasFailure()) {
       return;
     }
   }
@@ -166,7 +129,7 @@ TEST(EntryRobustness, ExtremeMainTimeRequestsAre200Or422WithFiniteNumbers) {
   for (int i = 0; i < 1500; ++i) {
     const json request = plausible_main_time(numbers, engine);
     check("/v1/main-time", &entry::handle_main_time, request, answered);
-    if (HasFatalFailure()) {
+    if (HasFailure()) {
       return;
     }
   }

@@ -1,0 +1,41 @@
+#include "api/roughness/bore_milling_endpoint.h"
+
+#include "api/domain_error_mapping.h"
+#include "api/field_reader.h"
+#include "api/milling_sense_json.h"
+#include "domain/roughness/bore_milling.h"
+
+namespace cutcalc::api::roughness {
+namespace {
+
+constexpr std::int64_t kMaxTeeth = 1000;
+
+}  // namespace
+
+HandlerOutcome handle_bore_milling(const nlohmann::json& body) {
+  std::vector<FieldError> errors;
+  ObjectReader in = root_reader(body, errors);
+  domain::roughness::BoreMillingParams params;
+  params.bore_radius_mm = in.required_number("bore_radius_mm", Bounds::positive()).value_or(0.0);
+  params.cutter_radius_mm =
+      in.required_number("cutter_radius_mm", Bounds::positive()).value_or(0.0);
+  params.teeth = static_cast<int>(in.required_integer("teeth", 1, kMaxTeeth).value_or(1));
+  params.feed_per_rev_mm = in.required_number("feed_per_rev_mm", Bounds::positive()).value_or(0.0);
+  params.milling = read_milling(in).value_or(domain::MillingSense::up);
+  in.reject_unknown_fields();
+  if (!errors.empty()) {
+    return invalid_input(std::move(errors));
+  }
+  const auto result = domain::roughness::compute_bore_milling_cusp(params);
+  if (!result.ok()) {
+    return to_problem(result.error());
+  }
+  const auto& cusp = result.value();
+  return nlohmann::json{{"cusp_height_um", cusp.cusp_height_um},
+                        {"approximate_cusp_height_um", cusp.approximate_cusp_height_um},
+                        {"feed_per_tooth_mm", cusp.feed_per_tooth_mm},
+                        {"feed_per_tooth_on_bore_mm", cusp.feed_per_tooth_on_bore_mm},
+                        {"pitch_angle_deg", cusp.pitch_angle_deg}};
+}
+
+}  // namespace cutcalc::api::roughness

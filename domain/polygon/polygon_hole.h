@@ -1,0 +1,61 @@
+#pragma once
+// G-code for an N-faceted hole cut by a rolling rotor tool, with the predicted hole
+// (spec polygon-holes.md P1-P27; paper 004, corrected; block-rate limit from paper 000).
+// Units: mm, rev/min, ms, degrees in the program. Inputs are range-checked by the caller (each
+// field on its own, spec section 10); this function checks what depends on several inputs.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "domain/common/result.h"
+
+namespace cutcalc::domain::polygon {
+
+enum class Synchronization {
+  feed_per_rev,  // G95, F = feed per spindle revolution (the paper's way); phase not locked
+  c_axis,        // spindle as rotary axis C: the exact rotor phase in C words on every arc
+};
+
+struct PolygonHoleParams {
+  int faces = 4;                       // N, 3..12
+  double inscribed_diameter_mm = 0.0;  // d >= 1
+  double depth_mm = 0.0;               // > 0
+  double step_down_mm = 0.0;           // largest step per layer, > 0
+  double spindle_speed_rpm = 0.0;      // > 0
+  double tolerance_mm = 0.001;         // arc-fit tolerance, 0.0001..0.1
+  Synchronization synchronization = Synchronization::feed_per_rev;
+  std::optional<int> loops_per_layer;  // 1..100; default N - 1 (one spindle revolution)
+  double safe_z_mm = 5.0;              // > 0
+  double block_time_ms = 2.0;          // the control's block processing time, > 0
+};
+
+struct ProgramWarning {
+  std::string code;    // feed_exceeds_block_rate, phase_not_locked
+  std::string detail;  // English, for people
+};
+
+struct PolygonHoleResult {
+  std::string program;                             // section 5 text, LF line ends
+  int blocks_per_loop = 0;                         // P21
+  double loop_length_mm = 0.0;                     // L_p (P23)
+  double feed_per_rev_mm = 0.0;                    // (N - 1) L_p (P23)
+  double eccentricity_mm = 0.0;                    // e (P5)
+  double max_path_deviation_mm = 0.0;              // P20
+  double predicted_overcut_mm = 0.0;               // P26
+  double uncut_corner_area_mm2 = 0.0;              // P17, all N corners
+  double corner_gap_mm = 0.0;                      // g (P15)
+  double max_feed_by_block_rate_mm_per_min = 0.0;  // P27
+  std::vector<ProgramWarning> warnings;
+  std::string file_name;  // polygon-hole-N{N}-d{d with 4 decimals}.ngc
+};
+
+// P1-P27. Errors: tolerance_unreachable (m > 1000 biarcs needed), program_too_large (more than
+// 200 000 arc blocks), not_converged (a numerical procedure failed: a bug).
+Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params);
+
+// The program with each warning written as a comment line `(WARNING {code}: {detail})` after the
+// first comment line: the plain-text answer, where the JSON warnings are not seen.
+std::string program_with_warning_comments(const PolygonHoleResult& result);
+
+}  // namespace cutcalc::domain::polygon

@@ -1,0 +1,67 @@
+#include "support/sanity_checks.h"
+
+#include <gtest/gtest.h>
+
+#include "support/openapi_contract.h"
+
+namespace cutcalc::testing {
+namespace {
+
+const test_support::OpenApiContract& contract() {
+  static const auto loaded = test_support::OpenApiContract::load(CUTCALC_OPENAPI_PATH);
+  return loaded;
+}
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Lengths (_mm, _um) and times (_min) are never negative; coordinates and offsets are signed.
+void expect_no_negative_lengths(const nlohmann::json& value, const std::string& key,
+                                const std::string& request) {
+  if (value.is_number()) {
+    const bool signed_field =
+        key == "x_mm" || key == "y_mm" || key == "offset_mm" || key == "axis_y_mm";
+    const bool length_or_time =
+        ends_with(key, "_mm") || ends_with(key, "_um") || ends_with(key, "_min");
+    if (length_or_time && !signed_field) {
+      EXPECT_GE(value.get<double>(), 0.0) << key << " for " << request;
+    }
+  } else if (value.is_object()) {
+    for (const auto& [name, element] : value.items()) {
+      expect_no_negative_lengths(element, name, request);
+    }
+  } else if (value.is_array()) {
+    for (const auto& element : value) {
+      expect_no_negative_lengths(element, key, request);
+    }
+  }
+}
+
+}  // namespace
+
+int expect_sane_answer(const char* path, api::JsonHandler handler, const nlohmann::json& request) {
+  const std::string body = request.dump();
+  const api::ApiResponse response =
+      api::run_json_endpoint({path, "application/json", body, "sanity"}, handler);
+  EXPECT_TRUE(response.status == 200 || response.status == 422)
+      << response.status << " for " << body << "\n"
+      << response.body;
+  const nlohmann::json parsed = nlohmann::json::parse(response.body, nullptr, false);
+  if (parsed.is_discarded()) {
+    ADD_FAILURE() << "not JSON: " << response.body;
+    return 0;
+  }
+  EXPECT_TRUE(api::all_numbers_finite(parsed)) << body;
+  if (response.status == 200) {
+    expect_no_negative_lengths(parsed, "", body);
+  }
+  for (const std::string& violation :
+       contract().check_response("post", path, response.status, response.content_type, parsed)) {
+    ADD_FAILURE() << violation << "\nrequest: " << body << "\nresponse: " << response.body;
+  }
+  return response.status;
+}
+
+}  // namespace cutcalc::testing
