@@ -164,17 +164,22 @@ std::optional<std::vector<double>> ObjectReader::optional_number_list(std::strin
   return all_valid ? std::optional(std::move(numbers)) : std::nullopt;
 }
 
-std::optional<std::string> ObjectReader::required_choice(
-    std::string_view key, std::initializer_list<std::string_view> allowed) {
-  const nlohmann::json* value = find(key);
+namespace {
+
+std::string list_of(std::initializer_list<std::string_view> allowed) {
   std::string choices;
   for (const std::string_view choice : allowed) {
     choices += (choices.empty() ? "" : ", ") + std::string(choice);
   }
+  return choices;
+}
+
+}  // namespace
+
+std::optional<std::string> ObjectReader::optional_choice(
+    std::string_view key, std::initializer_list<std::string_view> allowed) {
+  const nlohmann::json* value = find(key);
   if (value == nullptr) {
-    if (present()) {
-      add_error(key, "is required (one of: " + choices + ")");
-    }
     return std::nullopt;
   }
   if (value->is_string()) {
@@ -185,8 +190,18 @@ std::optional<std::string> ObjectReader::required_choice(
       }
     }
   }
-  add_error(key, "must be one of: " + choices);
+  add_error(key, "must be one of: " + list_of(allowed));
   return std::nullopt;
+}
+
+std::optional<std::string> ObjectReader::required_choice(
+    std::string_view key, std::initializer_list<std::string_view> allowed) {
+  if (present() && !has(key)) {
+    asked_.emplace(key);
+    add_error(key, "is required (one of: " + list_of(allowed) + ")");
+    return std::nullopt;
+  }
+  return optional_choice(key, allowed);
 }
 
 ObjectReader ObjectReader::object(std::string_view key, bool required) {

@@ -70,6 +70,9 @@ class ObjectReader {
                                                           std::size_t min_items,
                                                           std::size_t max_items);
 
+  // Absent: nullopt, no error. Present: a string that must be one of `allowed`.
+  std::optional<std::string> optional_choice(std::string_view key,
+                                             std::initializer_list<std::string_view> allowed);
   // A string that must be one of `allowed`.
   std::optional<std::string> required_choice(std::string_view key,
                                              std::initializer_list<std::string_view> allowed);

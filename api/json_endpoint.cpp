@@ -5,6 +5,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "api/accept_header.h"
 #include "api/json_body.h"
 
 namespace cutcalc::api {
@@ -40,6 +41,16 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
   HandlerOutcome outcome = handler(std::get<nlohmann::json>(parsed));
   if (auto* problem = std::get_if<Problem>(&outcome)) {
     return problem_response(*problem, instance, request_id);
+  }
+  if (auto* document = std::get_if<JsonWithText>(&outcome)) {
+    if (prefers_plain_text(request.accept)) {
+      return ApiResponse{
+          200,
+          "text/plain; charset=us-ascii",
+          std::move(document->text),
+          {{"Content-Disposition", "attachment; filename=\"" + document->file_name + "\""}}};
+    }
+    outcome = std::move(document->json);
   }
   const auto& body = std::get<nlohmann::json>(outcome);
   if (!all_numbers_finite(body)) {

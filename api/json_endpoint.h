@@ -17,9 +17,17 @@ struct ApiRequest {
   std::string_view content_type;
   std::string_view body;
   std::string_view request_id;
+  std::string_view accept;  // the Accept header; only answers with a text form look at it
 };
 
-using HandlerOutcome = std::variant<nlohmann::json, Problem>;
+// An answer that also has a plain-text form (a G-code program), chosen by the Accept header.
+struct JsonWithText {
+  nlohmann::json json;
+  std::string text;       // sent as text/plain; charset=us-ascii
+  std::string file_name;  // for Content-Disposition: attachment
+};
+
+using HandlerOutcome = std::variant<nlohmann::json, Problem, JsonWithText>;
 using JsonHandler = HandlerOutcome (*)(const nlohmann::json& body);
 
 ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler);

@@ -5,6 +5,7 @@
 #include "api/entry/entry_length_endpoint.h"
 #include "api/entry/main_time_endpoint.h"
 #include "api/kinematics/resultant_speeds_endpoint.h"
+#include "api/polygon/polygon_hole_endpoint.h"
 #include "api/roughness/bore_milling_endpoint.h"
 #include "api/roughness/groove_wall_endpoint.h"
 
@@ -17,6 +18,7 @@ std::span<const CalculationRoute> calculation_routes() {
       CalculationRoute{"/v1/resultant-speeds", &kinematics::handle_resultant_speeds},
       CalculationRoute{"/v1/roughness/groove-wall", &roughness::handle_groove_wall},
       CalculationRoute{"/v1/roughness/bore-milling", &roughness::handle_bore_milling},
+      CalculationRoute{"/v1/polygon-hole/gcode", &polygon::handle_polygon_hole},
   };
   return routes;
 }

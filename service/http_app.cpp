@@ -163,7 +163,9 @@ void HttpApp::install_routes() {
                                                         httplib::Response& res) {
       const std::string content_type = req.get_header_value("Content-Type");
       const std::string request_id = res.get_header_value(kRequestIdHeader);
-      write(res, api::run_json_endpoint({req.path, content_type, req.body, request_id}, handler));
+      const std::string accept = req.get_header_value("Accept");
+      write(res,
+            api::run_json_endpoint({req.path, content_type, req.body, request_id, accept}, handler));
     });
   }
 

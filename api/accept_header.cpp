@@ -1,0 +1,78 @@
+#include "api/accept_header.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <optional>
+#include <string>
+
+namespace cutcalc::api {
+namespace {
+
+std::string_view trim(std::string_view text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())) != 0) {
+    text.remove_prefix(1);
+  }
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())) != 0) {
+    text.remove_suffix(1);
+  }
+  return text;
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+// The q value of one media range ("text/plain;q=0.5"); 1 when absent, 0 when malformed.
+double quality(std::string_view parameters) {
+  while (!parameters.empty()) {
+    const auto semicolon = parameters.find(';');
+    const std::string_view parameter = trim(parameters.substr(0, semicolon));
+    parameters =
+        semicolon == std::string_view::npos ? std::string_view{} : parameters.substr(semicolon + 1);
+    if (parameter.size() > 2 && (parameter[0] == 'q' || parameter[0] == 'Q') &&
+        parameter[1] == '=') {
+      double q = 0.0;
+      const std::string_view value = parameter.substr(2);
+      const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), q);
+      if (error != std::errc() || end != value.data() + value.size() || q < 0.0 || q > 1.0) {
+        return 0.0;
+      }
+      return q;
+    }
+  }
+  return 1.0;
+}
+
+// The highest q the header gives to exactly `media_type`, or nullopt when it is not named.
+std::optional<double> named_quality(std::string_view accept, std::string_view media_type) {
+  std::optional<double> best;
+  while (!accept.empty()) {
+    const auto comma = accept.find(',');
+    const std::string_view range = accept.substr(0, comma);
+    accept = comma == std::string_view::npos ? std::string_view{} : accept.substr(comma + 1);
+    const auto semicolon = range.find(';');
+    if (iequals(trim(range.substr(0, semicolon)), media_type)) {
+      const double q =
+          semicolon == std::string_view::npos ? 1.0 : quality(range.substr(semicolon + 1));
+      best = std::max(best.value_or(0.0), q);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+bool prefers_plain_text(std::string_view accept) {
+  const auto text = named_quality(accept, "text/plain");
+  if (!text || *text <= 0.0) {
+    return false;
+  }
+  const auto json = named_quality(accept, "application/json");
+  return !json || *text > *json;
+}
+
+}  // namespace cutcalc::api

@@ -1,0 +1,76 @@
+#include "api/polygon/polygon_hole_endpoint.h"
+
+#include "api/domain_error_mapping.h"
+#include "api/field_reader.h"
+#include "domain/polygon/polygon_hole.h"
+
+namespace cutcalc::api::polygon {
+namespace {
+
+namespace model = domain::polygon;
+
+// Spec section 10: d below 1 mm is beyond the program's 0.1 um resolution; a tolerance below
+// 0.1 um likewise; above 0.1 mm the fit is no longer a finishing path.
+const Bounds kDiameter{1.0, true, kMaxLengthMm, true, {}};
+const Bounds kTolerance{0.0001, true, 0.1, true, {}};
+constexpr std::int64_t kMaxLoopsPerLayer = 100;
+
+model::PolygonHoleParams read_params(ObjectReader& in) {
+  model::PolygonHoleParams params;
+  params.faces = static_cast<int>(in.required_integer("faces", 3, 12).value_or(4));
+  params.inscribed_diameter_mm =
+      in.required_number("inscribed_diameter_mm", kDiameter).value_or(1.0);
+  params.depth_mm = in.required_number("depth_mm", Bounds::positive()).value_or(1.0);
+  params.step_down_mm = in.required_number("step_down_mm", Bounds::positive()).value_or(1.0);
+  params.spindle_speed_rpm =
+      in.required_number("spindle_speed_rpm", Bounds::positive()).value_or(1.0);
+  params.tolerance_mm = in.number_or("tolerance_mm", kTolerance, 0.001);
+  const auto mode = in.optional_choice("synchronization", {"feed_per_rev", "c_axis"});
+  params.synchronization =
+      mode == "c_axis" ? model::Synchronization::c_axis : model::Synchronization::feed_per_rev;
+  if (in.has("loops_per_layer")) {
+    params.loops_per_layer =
+        static_cast<int>(in.required_integer("loops_per_layer", 1, kMaxLoopsPerLayer).value_or(1));
+  }
+  params.safe_z_mm = in.number_or("safe_z_mm", Bounds::positive(), 5.0);
+  params.block_time_ms = in.number_or("block_time_ms", Bounds::positive(), 2.0);
+  in.reject_unknown_fields();
+  return params;
+}
+
+nlohmann::json to_json(const model::PolygonHoleResult& result) {
+  nlohmann::json warnings = nlohmann::json::array();
+  for (const auto& warning : result.warnings) {
+    warnings.push_back({{"code", warning.code}, {"detail", warning.detail}});
+  }
+  return {{"program", result.program},
+          {"blocks_per_loop", result.blocks_per_loop},
+          {"loop_length_mm", result.loop_length_mm},
+          {"feed_per_rev_mm", result.feed_per_rev_mm},
+          {"eccentricity_mm", result.eccentricity_mm},
+          {"max_path_deviation_mm", result.max_path_deviation_mm},
+          {"predicted_overcut_mm", result.predicted_overcut_mm},
+          {"uncut_corner_area_mm2", result.uncut_corner_area_mm2},
+          {"corner_gap_mm", result.corner_gap_mm},
+          {"max_feed_by_block_rate_mm_per_min", result.max_feed_by_block_rate_mm_per_min},
+          {"warnings", std::move(warnings)}};
+}
+
+}  // namespace
+
+HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
+  std::vector<FieldError> errors;
+  ObjectReader in = root_reader(body, errors);
+  const auto params = read_params(in);
+  if (!errors.empty()) {
+    return invalid_input(std::move(errors));
+  }
+  const auto result = model::generate_polygon_hole(params);
+  if (!result.ok()) {
+    return to_problem(result.error());
+  }
+  return JsonWithText{to_json(result.value()), model::program_with_warning_comments(result.value()),
+                      result.value().file_name};
+}
+
+}  // namespace cutcalc::api::polygon
