@@ -101,4 +101,3 @@ void BM_MainTime3x5(benchmark::State& state) {
 BENCHMARK(BM_MainTime3x5);
 
 }  // namespace
-

@@ -10,9 +10,9 @@
 namespace cutcalc::domain::roughness {
 
 struct GrooveWallParams {
-  double feed_mm = 0.0;               // S, pitch between successive corner positions, > 0
-  double nose_radius_mm = 0.0;        // rho > 0
-  double minor_edge_angle_deg = 0.0;  // phi1, 0 <= phi1 < 90
+  double feed_mm = 0.0;                // S, pitch between successive corner positions, > 0
+  double nose_radius_mm = 0.0;         // rho > 0
+  double minor_edge_angle_deg = 0.0;   // phi1, 0 <= phi1 < 90
   std::optional<double> target_rz_um;  // optional target crest height, > 0
 };
 
@@ -23,7 +23,7 @@ enum class CrestBranch {
 };
 
 struct GrooveWallResult {
-  double rz_um = 0.0;                  // Rz_p (R1)
+  double rz_um = 0.0;  // Rz_p (R1)
   CrestBranch branch = CrestBranch::nose_arc;
   std::optional<double> max_feed_mm;  // largest S with Rz(S) <= target (R8), with a target only
 };
