@@ -50,7 +50,8 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
           std::move(document->text),
           {{"Content-Disposition", "attachment; filename=\"" + document->file_name + "\""}}};
     }
-    outcome = std::move(document->json);
+    nlohmann::json json_form = std::move(document->json);  // moved out before the variant changes
+    outcome = std::move(json_form);
   }
   const auto& body = std::get<nlohmann::json>(outcome);
   if (!all_numbers_finite(body)) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ struct ReferenceCase {
 };
 
 std::vector<ReferenceCase> load_cases(const std::string& file_name);
+
+// gtest prints a failing parameter with this: the case id, not the object's bytes.
+inline void PrintTo(const ReferenceCase& reference, std::ostream* out) {
+  *out << reference.file << ":" << reference.data.value("id", std::string("?"));
+}
 
 // gtest parameter name: the case id with non-alphanumerics replaced.
 std::string reference_case_name(const ::testing::TestParamInfo<ReferenceCase>& info);
