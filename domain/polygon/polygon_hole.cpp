@@ -1,0 +1,142 @@
+// generate_polygon_hole: spec polygon-holes.md P1-P27 put together (paper 004, corrected).
+// The fit runs on the unit-diameter hole (d = 1) and is scaled to mm for the output, so that no
+// diameter overflows the squares of P19.
+
+#include "domain/polygon/polygon_hole.h"
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "domain/polygon/biarc_fit.h"
+#include "domain/polygon/block_rate.h"
+#include "domain/polygon/centre_path.h"
+#include "domain/polygon/gcode_writer.h"
+#include "domain/polygon/hole_prediction.h"
+#include "domain/polygon/polygon_geometry.h"
+#include "domain/polygon/rotor.h"
+
+namespace cutcalc::domain::polygon {
+
+namespace {
+
+constexpr int kMaxBiarcsPerEllipseArc = 1000;      // P21
+constexpr double kMaxProgramArcBlocks = 200000.0;  // section 10
+constexpr double kMergeTolerance = 1e-9;           // P21, times d (= 1 here)
+
+// A comment must not hold parentheses, commas, % or non-ASCII characters (section 5).
+std::string comment_safe(const std::string& text) {
+  std::string safe;
+  safe.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '(' || c == ')' || c == ',' || c == '%' || byte < 0x20 || byte > 0x7e) {
+      safe.push_back(' ');
+    } else {
+      safe.push_back(c);
+    }
+  }
+  return safe;
+}
+
+}  // namespace
+
+Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params) {
+  const int N = params.faces;
+  const double d = params.inscribed_diameter_mm;
+  const detail::PolygonShape shape_mm = detail::make_polygon_shape(N, d);  // P1-P5 in mm
+  const detail::PolygonShape unit_shape = detail::make_polygon_shape(N, 1.0);
+  const detail::CentrePath path(unit_shape);  // P6-P10
+  const detail::Rotor rotor(unit_shape);      // P11-P13
+
+  // P18-P21
+  auto fit = detail::fit_ellipse_arc(path, params.tolerance_mm / d, kMaxBiarcsPerEllipseArc);
+  if (!fit.ok()) {
+    return fit.error();
+  }
+  const std::vector<detail::LoopBlock> blocks =
+      detail::loop_blocks(path, fit.value(), kMergeTolerance);
+  for (const detail::LoopBlock& block : blocks) {
+    if (!(block.arc.sweep > 0.0) || !std::isfinite(block.arc.radius)) {
+      return make_error(ErrorCode::not_converged,
+                        "the arc fit produced a block that is not a counter-clockwise arc");
+    }
+  }
+
+  // P22 and the section 10 size limit.
+  const int loops_per_layer = params.loops_per_layer.value_or(N - 1);
+  const detail::Layers layers = detail::split_depth(params.depth_mm, params.step_down_mm);
+  if (!(detail::program_arc_blocks(layers.n, loops_per_layer, blocks.size()) <=
+        kMaxProgramArcBlocks)) {
+    return make_error(ErrorCode::program_too_large,
+                      "the program would have more than 200000 arc blocks: use a larger "
+                      "step_down_mm, fewer loops_per_layer or a larger tolerance_mm");
+  }
+
+  // P23
+  const detail::PrintedLoop loop = detail::print_loop(blocks, d);
+
+  PolygonHoleResult result;
+  result.blocks_per_loop = static_cast<int>(blocks.size());
+  result.loop_length_mm = loop.printed_length;
+  result.feed_per_rev_mm = (N - 1) * loop.printed_length;
+  result.eccentricity_mm = shape_mm.e;
+  result.max_path_deviation_mm = fit.value().deviation * d;
+  // P24-P26
+  const auto segments =
+      detail::motion_segments(unit_shape, fit.value(), blocks, params.synchronization);
+  result.predicted_overcut_mm = detail::predicted_overcut(unit_shape, rotor, segments) * d;
+  // P15, P17
+  result.uncut_corner_area_mm2 = detail::uncut_area_coefficient(N) * d * d;
+  result.corner_gap_mm = detail::corner_gap(shape_mm);
+  // P27
+  result.max_feed_by_block_rate_mm_per_min = detail::max_feed_by_block_rate(
+      detail::shortest_block_length(blocks) * d, params.block_time_ms);
+  result.warnings = detail::program_warnings(params.synchronization,
+                                             params.spindle_speed_rpm * result.feed_per_rev_mm,
+                                             result.max_feed_by_block_rate_mm_per_min);
+
+  detail::ProgramLayout layout;
+  layout.N = N;
+  layout.d_mm = d;
+  layout.a_mm = shape_mm.a;
+  layout.r_mm = shape_mm.r;
+  layout.e_mm = shape_mm.e;
+  layout.exact_loop_length_mm = path.loop_length() * d;
+  layout.tolerance_mm = params.tolerance_mm;
+  layout.deviation_mm = result.max_path_deviation_mm;
+  layout.depth_mm = params.depth_mm;
+  layout.step_down_mm = params.step_down_mm;
+  layout.layers = static_cast<int>(layers.n);
+  layout.dz_mm = layers.dz;
+  layout.loops_per_layer = loops_per_layer;
+  layout.safe_z_mm = params.safe_z_mm;
+  layout.spindle_speed_rpm = params.spindle_speed_rpm;
+  layout.synchronization = params.synchronization;
+  layout.feed_per_rev_mm = result.feed_per_rev_mm;
+  result.program = detail::write_program(layout, loop);
+  result.file_name = "polygon-hole-N" + std::to_string(N) + "-d" + detail::fmt4(d) + ".ngc";
+  return result;
+}
+
+std::string program_with_warning_comments(const PolygonHoleResult& result) {
+  const std::string& program = result.program;
+  // After the first comment line: the line after the leading "%".
+  const std::size_t first_line_end = program.find('\n');
+  const std::size_t comment_end = first_line_end == std::string::npos
+                                      ? std::string::npos
+                                      : program.find('\n', first_line_end + 1);
+  if (comment_end == std::string::npos || result.warnings.empty()) {
+    return program;
+  }
+  std::string comments;
+  for (const ProgramWarning& warning : result.warnings) {
+    comments +=
+        "(WARNING " + comment_safe(warning.code) + ": " + comment_safe(warning.detail) + ")\n";
+  }
+  std::string text = program;
+  text.insert(comment_end + 1, comments);
+  return text;
+}
+
+}  // namespace cutcalc::domain::polygon
