@@ -88,10 +88,12 @@ TEST_P(PolygonReferenceCase, ServiceAnswersWithinTheReferenceBounds) {
     return;
   }
   SCOPED_TRACE(reference.data.at("id").get<std::string>());
-  for (const auto& [key, bound] : expect.value("max", json::object()).items()) {
+  const json upper_bounds = expect.value("max", json::object());
+  const json lower_bounds = expect.value("min", json::object());
+  for (const auto& [key, bound] : upper_bounds.items()) {
     EXPECT_LE(reply.json.at(key).get<double>(), bound.get<double>()) << key;
   }
-  for (const auto& [key, bound] : expect.value("min", json::object()).items()) {
+  for (const auto& [key, bound] : lower_bounds.items()) {
     EXPECT_GE(reply.json.at(key).get<double>(), bound.get<double>()) << key;
   }
   std::set<std::string> codes;
