@@ -61,7 +61,8 @@ Problem to_problem(const domain::DomainError& error) {
   }
   std::string pointer = pointer_of(error.code);
   if (error.index) {
-    pointer += "/" + std::to_string(*error.index);
+    pointer += '/';
+    pointer += std::to_string(*error.index);
   }
   return Problem{ProblemKind::impossible_input, error.detail, {FieldError{pointer, error.detail}}};
 }

@@ -69,7 +69,7 @@ class ElasticThreadPool final : public httplib::TaskQueue {
   // Queues the task and starts a thread for it if none is idle; may hand the task back to run
   // inline (returned non-empty) when no thread exists or can be started.
   std::function<void()> push_locked(std::function<void()> fn);
-  bool spawn_locked();        // false if the thread could not be started
+  bool spawn_locked();          // false if the thread could not be started
   void reap_finished_locked();  // joins threads that exited for idleness
   void publish_locked();
 

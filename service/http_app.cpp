@@ -78,7 +78,15 @@ int HttpApp::bind() {
                            config_.http.listen_backlog);
 }
 
-bool HttpApp::serve() { return server_->listen_after_bind(); }
+bool HttpApp::serve() {
+  const bool served = server_->listen_after_bind();
+  // The listener is closed; answer what is in flight before the caller tears the app down.
+  const auto limit = std::chrono::milliseconds(std::max(config_.http.request_timeout_ms, 1000L));
+  if (!server_->drain(limit)) {
+    spdlog::warn("shutdown: requests still in flight after {} ms were dropped", limit.count());
+  }
+  return served;
+}
 
 void HttpApp::shutdown() {
   draining_.store(true);
@@ -159,14 +167,14 @@ void HttpApp::install_middleware() {
 void HttpApp::install_routes() {
   for (const api::CalculationRoute& route : api::calculation_routes()) {
     routes_.add(route.path, "POST");
-    server_->Post(route.path, [handler = route.handler](const httplib::Request& req,
-                                                        httplib::Response& res) {
-      const std::string content_type = req.get_header_value("Content-Type");
-      const std::string request_id = res.get_header_value(kRequestIdHeader);
-      const std::string accept = req.get_header_value("Accept");
-      write(res,
-            api::run_json_endpoint({req.path, content_type, req.body, request_id, accept}, handler));
-    });
+    server_->Post(
+        route.path, [handler = route.handler](const httplib::Request& req, httplib::Response& res) {
+          const std::string content_type = req.get_header_value("Content-Type");
+          const std::string request_id = res.get_header_value(kRequestIdHeader);
+          const std::string accept = req.get_header_value("Accept");
+          write(res, api::run_json_endpoint({req.path, content_type, req.body, request_id, accept},
+                                            handler));
+        });
   }
 
   routes_.add("/healthz", "GET, HEAD");

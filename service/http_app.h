@@ -6,12 +6,9 @@
 #include <memory>
 
 #include "service/config.h"
+#include "service/http_tuning.h"
 #include "service/metrics.h"
 #include "service/route_table.h"
-
-namespace httplib {
-class Server;
-}
 
 namespace cutcalc::service {
 
@@ -34,7 +31,7 @@ class HttpApp {
   void install_routes();
 
   Config config_;
-  std::unique_ptr<httplib::Server> server_;
+  std::unique_ptr<TunedServer> server_;
   Metrics metrics_;
   RouteTable routes_;
   std::atomic<bool> draining_{false};

@@ -263,8 +263,9 @@ RequestReadiness classify_request(std::string_view input, std::size_t max_body_b
     if (iequals(name, "content-length")) {
       if (has_length) return needs_thread;  // duplicates: let the library decide
       std::string_view value = line.substr(colon + 1, line.size() - 2 - (colon + 1));
-      while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) value.remove_prefix(1);
-      while (!value.empty() && (value.back() == ' ' || value.back() == '\t')) value.remove_suffix(1);
+      const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+      while (!value.empty() && blank(value.front())) value.remove_prefix(1);
+      while (!value.empty() && blank(value.back())) value.remove_suffix(1);
       if (value.empty() || value.size() > 18) return needs_thread;
       for (const char c : value) {
         if (c < '0' || c > '9') return needs_thread;

@@ -45,9 +45,7 @@ class ConnectionStream final : public httplib::Stream {
   bool timed_out() const { return timed_out_; }
 
   bool has_buffered_input() const { return in_off_ < in_len_; }
-  std::string_view buffered_input() const {
-    return {in_.data() + in_off_, in_len_ - in_off_};
-  }
+  std::string_view buffered_input() const { return {in_.data() + in_off_, in_len_ - in_off_}; }
   // One non-blocking recv() into the buffer, growing it up to `limit` bytes of unread input.
   enum class Fill { data, eof, again, full, error };
   Fill fill_nonblocking(std::size_t limit);

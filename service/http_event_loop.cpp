@@ -31,24 +31,29 @@ constexpr char kServiceUnavailable[] =
 }  // namespace
 
 struct EventLoopEngine::Connection {
-  Connection(int sock, const EventLoopSettings& settings)
+  Connection(int sock, const EventLoopSettings& settings, std::atomic<std::size_t>& open)
       : fd(sock),
         stream(sock, settings.read_timeout, settings.write_timeout),
-        requests_left(std::max<std::size_t>(settings.keep_alive_max_requests, 1)) {}
+        requests_left(std::max<std::size_t>(settings.keep_alive_max_requests, 1)),
+        open_connections(open) {
+    open_connections.fetch_add(1);
+  }
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
   ~Connection() {
     ::shutdown(fd, SHUT_RDWR);
     ::close(fd);
+    open_connections.fetch_sub(1);
   }
 
   int fd;
   ConnectionStream stream;
   std::size_t requests_left;
   std::size_t loop = 0;
-  bool in_request = false;         // some bytes of the next request are buffered
-  bool close_after_flush = false;  // the response being flushed is the last one
-  Clock::time_point deadline{};    // of the request in progress, or of the idle wait
+  std::atomic<std::size_t>& open_connections;  // the engine's count, for drain()
+  bool in_request = false;                     // some bytes of the next request are buffered
+  bool close_after_flush = false;              // the response being flushed is the last one
+  Clock::time_point deadline{};                // of the request in progress, or of the idle wait
 };
 
 class EventLoopEngine::Loop {
@@ -106,15 +111,19 @@ class EventLoopEngine::Loop {
     auto next_sweep = Clock::now() + kSweepInterval;
     for (;;) {
       const auto wait = std::chrono::duration_cast<milliseconds>(next_sweep - Clock::now());
-      const int n = ::epoll_wait(epoll_fd_, events.data(), static_cast<int>(events.size()),
-                                 static_cast<int>(std::clamp<milliseconds::rep>(wait.count(), 0,
-                                                                                 1000)));
+      const int n =
+          ::epoll_wait(epoll_fd_, events.data(), static_cast<int>(events.size()),
+                       static_cast<int>(std::clamp<milliseconds::rep>(wait.count(), 0, 1000)));
       for (int i = 0; i < n; ++i) {
         auto* connection = static_cast<Connection*>(events[static_cast<std::size_t>(i)].data.ptr);
         if (connection == nullptr) {
           if (!take_inbox()) return finish();
-        } else {
+          continue;
+        }
+        try {
           on_readable(connection);
+        } catch (...) {  // e.g. bad_alloc: lose this connection, not the loop
+          drop(connection);
         }
       }
       const auto now = Clock::now();
@@ -135,9 +144,9 @@ class EventLoopEngine::Loop {
       if (quit_) return false;
       arrived.swap(inbox_);
     }
-    const bool stopping = engine_.stopping_();
     for (auto& connection : arrived) {
-      if (stopping) continue;  // dropped: closed
+      // Also while stopping: the connection may carry a request in flight; the sweep closes it
+      // if it is idle.
       epoll_event event{};
       event.events = EPOLLIN | EPOLLRDHUP;
       event.data.ptr = connection.get();
@@ -222,8 +231,10 @@ class EventLoopEngine::Loop {
     const bool stopping = engine_.stopping_();
     for (auto it = connections_.begin(); it != connections_.end();) {
       Connection& connection = *it->second;
-      if (stopping || now >= connection.deadline) {
-        if (!stopping && connection.in_request) {
+      // Stopping closes idle connections; a request in flight keeps its connection until it
+      // is answered (the response then says Connection: close) or its deadline passes.
+      if ((stopping && !connection.in_request) || now >= connection.deadline) {
+        if (connection.in_request) {
           engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
         }
         it = connections_.erase(it);
@@ -254,6 +265,17 @@ EventLoopEngine::EventLoopEngine(EventLoopSettings settings, ServeRequest serve,
   for (std::size_t i = 0; i < loops; ++i) loops_.push_back(std::make_unique<Loop>(*this));
 }
 
+bool EventLoopEngine::drain(std::chrono::milliseconds limit) {
+  const auto until = Clock::now() + limit;
+  while (open_connections_.load() > 0) {
+    if (Clock::now() >= until) {
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return true;
+}
+
 EventLoopEngine::~EventLoopEngine() {
   pool_->shutdown();  // blocking work finishes first; it may still park connections on the loops
   loops_.clear();
@@ -267,7 +289,7 @@ void EventLoopEngine::adopt(int sock) {
   }
   std::shared_ptr<Connection> connection;
   try {
-    connection = std::make_shared<Connection>(sock, settings_);
+    connection = std::make_shared<Connection>(sock, settings_, open_connections_);
   } catch (...) {
     ::close(sock);
     return;
@@ -295,12 +317,18 @@ EventLoopEngine::Outcome EventLoopEngine::serve_nonblocking(Connection& connecti
       case RequestReadiness::complete:
         break;
     }
-    if (stopping_()) return Outcome::close;
     stream.set_nonblocking_only(true);
     stream.start_request(Clock::time_point::max());
-    const bool close_connection = connection.requests_left <= 1;
+    // A request that arrived before the stop is answered, and is the connection's last.
+    const bool close_connection = connection.requests_left <= 1 || stopping_();
     bool connection_closed = false;
-    const bool ok = serve_(stream, close_connection, connection_closed);
+    bool ok = false;
+    try {
+      ok = serve_(stream, close_connection, connection_closed);
+    } catch (...) {
+      // httplib catches handler exceptions; anything else ends the connection.
+      return Outcome::close;
+    }
     stream.set_nonblocking_only(false);
     if (connection.requests_left > 1) --connection.requests_left;
     connection.in_request = false;
@@ -327,9 +355,9 @@ bool EventLoopEngine::hand_to_thread(std::shared_ptr<Connection> connection) {
   // At the thread cap with a full queue: refuse this request rather than wait.
   counters_.rejected_at_cap.fetch_add(1, std::memory_order_relaxed);
   if (!responding) {
-    [[maybe_unused]] const auto n = ::send(connection->fd, kServiceUnavailable,
-                                           sizeof(kServiceUnavailable) - 1,
-                                           MSG_NOSIGNAL | MSG_DONTWAIT);
+    [[maybe_unused]] const auto n =
+        ::send(connection->fd, kServiceUnavailable, sizeof(kServiceUnavailable) - 1,
+               MSG_NOSIGNAL | MSG_DONTWAIT);
   }
   return false;  // `connection` (and the task's copy) drop here: closed
 }
@@ -340,7 +368,6 @@ void EventLoopEngine::serve_blocking(const std::shared_ptr<Connection>& connecti
   if (stream.has_pending_output()) {
     if (!stream.flush() || connection->close_after_flush) return;  // closed with the last copy
   }
-  if (stopping_()) return;
   if (stream.has_buffered_input()) {
     // A request has begun that needs blocking reads: serve it as stock httplib would, within
     // the deadline set when its first bytes arrived.
@@ -350,7 +377,12 @@ void EventLoopEngine::serve_blocking(const std::shared_ptr<Connection>& connecti
                              : Clock::time_point::max());
     const bool close_connection = connection->requests_left <= 1 || stopping_();
     bool connection_closed = false;
-    const bool ok = serve_(stream, close_connection, connection_closed);
+    bool ok = false;
+    try {
+      ok = serve_(stream, close_connection, connection_closed);
+    } catch (...) {
+      return;  // closed with the last copy
+    }
     if (connection->requests_left > 1) --connection->requests_left;
     connection->in_request = false;
     counters_.requests.fetch_add(1, std::memory_order_relaxed);

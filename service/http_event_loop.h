@@ -59,6 +59,10 @@ class EventLoopEngine {
   // Takes ownership of an accepted socket. Never blocks.
   void adopt(int sock);
 
+  // After the server stopped accepting: waits until every request in flight has been answered
+  // (idle connections are closed at once), or until `limit` passes. True when drained.
+  bool drain(std::chrono::milliseconds limit);
+
  private:
   struct Connection;
   class Loop;
@@ -76,6 +80,7 @@ class EventLoopEngine {
   std::unique_ptr<ElasticThreadPool> pool_;
   std::vector<std::unique_ptr<Loop>> loops_;
   std::atomic<std::size_t> next_loop_{0};
+  std::atomic<std::size_t> open_connections_{0};  // adopted and not yet closed
 };
 
 }  // namespace cutcalc::service

@@ -1,6 +1,5 @@
 #include "service/http_tuning.h"
 
-#include <arpa/inet.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <poll.h>
@@ -8,13 +7,11 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
-#include <cerrno>
 #include <chrono>
-#include <cstring>
-#include <limits>
-#include <string>
 #include <thread>
+#include <utility>
+
+#include "service/http_event_loop.h"
 
 namespace cutcalc::service {
 namespace {
@@ -22,187 +19,22 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
-// Idle keep-alive waits are cut into slices this long, to notice server stop and thread pressure.
+// Blocking mode: idle keep-alive waits are cut into slices this long, to notice server stop and
+// thread pressure.
 constexpr milliseconds kIdleSlice{200};
-// Output is gathered up to this size before a send() (a response normally fits in one).
-constexpr std::size_t kOutputFlushBytes = 64 * 1024;
-
-int poll_ms(milliseconds timeout) {
-  const auto ms = std::clamp<milliseconds::rep>(timeout.count(), 0,
-                                                std::numeric_limits<int>::max());
-  return static_cast<int>(ms);
-}
-
-// Waits until `sock` has `events` pending; false on timeout or error.
-bool wait_socket(int sock, short events, milliseconds timeout) {
-  pollfd pfd{sock, events, 0};
-  for (;;) {
-    const int n = ::poll(&pfd, 1, poll_ms(timeout));
-    if (n > 0) return true;
-    if (n == 0) return false;
-    if (errno != EINTR) return false;
-  }
-}
 
 milliseconds to_ms(time_t sec, time_t usec) {
   return milliseconds{static_cast<milliseconds::rep>(sec) * 1000 +
                       static_cast<milliseconds::rep>(usec) / 1000};
 }
 
-void peer_or_local(int sock, bool peer, std::string& ip, int& port) {
-  sockaddr_storage addr{};
-  socklen_t len = sizeof(addr);
-  auto* sa = reinterpret_cast<sockaddr*>(&addr);
-  if ((peer ? ::getpeername(sock, sa, &len) : ::getsockname(sock, sa, &len)) != 0) return;
-  std::array<char, INET6_ADDRSTRLEN> text{};
-  if (addr.ss_family == AF_INET) {
-    const auto* in = reinterpret_cast<const sockaddr_in*>(&addr);
-    if (::inet_ntop(AF_INET, &in->sin_addr, text.data(), text.size()) == nullptr) return;
-    port = ntohs(in->sin_port);
-  } else if (addr.ss_family == AF_INET6) {
-    const auto* in6 = reinterpret_cast<const sockaddr_in6*>(&addr);
-    if (::inet_ntop(AF_INET6, &in6->sin6_addr, text.data(), text.size()) == nullptr) return;
-    port = ntohs(in6->sin6_port);
-  } else {
-    return;
-  }
-  ip = text.data();
-}
-
-// The Stream handed to httplib's process_request(): reads through a buffer that lives as long
-// as the connection, gathers writes until flush() (or until the next read from the socket, so
-// that e.g. "100 Continue" goes out before the body is awaited), and enforces a per-request
-// deadline on top of the per-read timeout.
-class ConnectionStream final : public httplib::Stream {
+// Event-loop mode: httplib's accept loop hands each accepted socket to process_and_close_socket()
+// through its task queue; TunedServer only passes the socket on to an event loop, which never
+// blocks, so it runs right on the accept thread.
+class InlineTaskQueue final : public httplib::TaskQueue {
  public:
-  ConnectionStream(int sock, milliseconds read_timeout, milliseconds write_timeout)
-      : sock_(sock), read_timeout_(read_timeout), write_timeout_(write_timeout) {}
-
-  bool has_buffered_input() const { return in_off_ < in_len_; }
-  bool timed_out() const { return timed_out_; }
-  void start_request(milliseconds budget) {
-    has_deadline_ = budget.count() > 0;
-    deadline_ = Clock::now() + budget;
-  }
-
-  bool is_readable() const override {
-    return has_buffered_input() || wait_socket(sock_, POLLIN, read_wait());
-  }
-  bool is_writable() const override { return wait_socket(sock_, POLLOUT, write_timeout_); }
-
-  ssize_t read(char* ptr, size_t size) override {
-    if (size == 0) return 0;
-    if (has_buffered_input()) return take_buffered(ptr, size);
-    if (!flush()) return -1;
-    // Large reads go straight to the caller's buffer, small ones through in_.
-    const bool direct = size >= in_.size();
-    char* const into = direct ? ptr : in_.data();
-    const size_t room = direct ? size : in_.size();
-    // Usually the bytes are already there (the idle wait polled for them): try first, poll after.
-    ssize_t n = recv_some(into, room, MSG_DONTWAIT);
-    if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-      const auto wait = read_wait();
-      if (wait.count() <= 0 || !wait_socket(sock_, POLLIN, wait)) {
-        if (has_deadline_ && Clock::now() >= deadline_) timed_out_ = true;
-        return -1;
-      }
-      n = recv_some(into, room, MSG_DONTWAIT);
-    }
-    if (n <= 0 || direct) return n;
-    in_off_ = 0;
-    in_len_ = static_cast<std::size_t>(n);
-    return take_buffered(ptr, size);
-  }
-
-  ssize_t write(const char* ptr, size_t size) override {
-    if (out_.size() + size > kOutputFlushBytes) {
-      if (!flush()) return -1;
-      if (size >= kOutputFlushBytes) return send_all(ptr, size) ? static_cast<ssize_t>(size) : -1;
-    }
-    out_.append(ptr, size);
-    return static_cast<ssize_t>(size);
-  }
-
-  bool flush() {
-    if (out_.empty()) return true;
-    const bool ok = send_all(out_.data(), out_.size());
-    out_.clear();
-    return ok;
-  }
-
-  void get_remote_ip_and_port(std::string& ip, int& port) const override {
-    if (!peer_known_) {
-      peer_or_local(sock_, true, peer_ip_, peer_port_);
-      peer_known_ = true;
-    }
-    ip = peer_ip_;
-    port = peer_port_;
-  }
-  void get_local_ip_and_port(std::string& ip, int& port) const override {
-    if (!local_known_) {
-      peer_or_local(sock_, false, local_ip_, local_port_);
-      local_known_ = true;
-    }
-    ip = local_ip_;
-    port = local_port_;
-  }
-  socket_t socket() const override { return sock_; }
-
- private:
-  milliseconds read_wait() const {
-    if (!has_deadline_) return read_timeout_;
-    const auto left = std::chrono::duration_cast<milliseconds>(deadline_ - Clock::now());
-    return std::min(read_timeout_, std::max(left, milliseconds{0}));
-  }
-
-  ssize_t take_buffered(char* ptr, size_t size) {
-    const std::size_t n = std::min(size, in_len_ - in_off_);
-    std::memcpy(ptr, in_.data() + in_off_, n);
-    in_off_ += n;
-    return static_cast<ssize_t>(n);
-  }
-
-  ssize_t recv_some(char* ptr, size_t size, int flags) {
-    for (;;) {
-      const ssize_t n = ::recv(sock_, ptr, size, flags);
-      if (n >= 0 || errno != EINTR) return n;
-    }
-  }
-
-  bool send_all(const char* ptr, size_t size) {
-    while (size > 0) {
-      const ssize_t n = ::send(sock_, ptr, size, MSG_NOSIGNAL);
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        // SO_SNDTIMEO (the write timeout) expired, or the socket was non-blocking and full.
-        if ((errno == EAGAIN || errno == EWOULDBLOCK) &&
-            wait_socket(sock_, POLLOUT, write_timeout_)) {
-          continue;
-        }
-        return false;
-      }
-      ptr += n;
-      size -= static_cast<size_t>(n);
-    }
-    return true;
-  }
-
-  int sock_;
-  milliseconds read_timeout_;
-  milliseconds write_timeout_;
-  bool has_deadline_ = false;
-  Clock::time_point deadline_{};
-  bool timed_out_ = false;
-  std::array<char, 8192> in_{};
-  std::size_t in_off_ = 0;
-  std::size_t in_len_ = 0;
-  std::string out_;
-  mutable bool peer_known_ = false;
-  mutable std::string peer_ip_;
-  mutable int peer_port_ = 0;
-  mutable bool local_known_ = false;  // process_request asks for both on every request
-  mutable std::string local_ip_;
-  mutable int local_port_ = 0;
+  void enqueue(std::function<void()> fn) override { fn(); }
+  void shutdown() override {}
 };
 
 // The protected listening socket of any httplib::Server (a pointer to member formed through a
@@ -213,6 +45,15 @@ struct ListenSocketAccess : httplib::Server {
   }
 };
 
+ElasticThreadPool::Limits pool_limits(const HttpTuning& tuning) {
+  ElasticThreadPool::Limits limits;
+  limits.min_threads = effective_worker_threads(tuning);
+  limits.max_threads = std::max(tuning.max_worker_threads, limits.min_threads);
+  limits.max_queued = std::max<std::size_t>(tuning.max_pending_connections, 1);
+  limits.idle_timeout = milliseconds{std::max(tuning.idle_thread_timeout_ms, 1L)};
+  return limits;
+}
+
 }  // namespace
 
 std::size_t effective_worker_threads(const HttpTuning& tuning) {
@@ -221,15 +62,68 @@ std::size_t effective_worker_threads(const HttpTuning& tuning) {
   return std::max<std::size_t>(8, 2 * cores);
 }
 
+std::size_t effective_event_loop_threads(const HttpTuning& tuning) {
+  if (tuning.event_loop_threads > 0) return tuning.event_loop_threads;
+  return std::max(1U, std::thread::hardware_concurrency());
+}
+
 TunedServer::TunedServer() : load_(std::make_shared<PoolLoad>()) {}
 
-TunedServer::~TunedServer() = default;
+// The engine (loops and their threads) goes before httplib::Server's members it calls into.
+TunedServer::~TunedServer() { engine_.reset(); }
+
+void TunedServer::configure(const HttpTuning& tuning) {
+  tcp_nodelay_on_accept_ = tuning.tcp_nodelay;
+  request_timeout_ms_ = std::max(tuning.request_timeout_ms, 0L);
+  const auto limits = pool_limits(tuning);
+  shed_at_busy_threads_ = tuning.shed_keep_alive_at_busy_threads > 0
+                              ? tuning.shed_keep_alive_at_busy_threads
+                              : std::max<std::size_t>(limits.max_threads * 3 / 4, 1);
+  engine_.reset();
+  if (!tuning.event_loop) {
+    new_task_queue = [limits, load = load_] { return new ElasticThreadPool(limits, load); };
+    return;
+  }
+  EventLoopSettings settings;
+  settings.loops = effective_event_loop_threads(tuning);
+  settings.read_timeout = to_ms(read_timeout_sec_, read_timeout_usec_);
+  settings.write_timeout = to_ms(write_timeout_sec_, write_timeout_usec_);
+  settings.keep_alive_timeout =
+      milliseconds{static_cast<milliseconds::rep>(keep_alive_timeout_sec_) * 1000};
+  settings.request_timeout = milliseconds{request_timeout_ms_};
+  settings.keep_alive_max_requests = keep_alive_max_count_;
+  settings.max_body_bytes = tuning.max_body_bytes;
+  settings.tcp_nodelay = tuning.tcp_nodelay;
+  settings.blocking_threads = limits;
+  // A few threads suffice for what the loops hand over; more start on demand.
+  settings.blocking_threads.min_threads =
+      tuning.worker_threads > 0 ? tuning.worker_threads : std::size_t{2};
+  engine_ = std::make_unique<EventLoopEngine>(
+      settings,
+      [this](httplib::Stream& stream, bool close_connection, bool& connection_closed) {
+        return process_request(stream, close_connection, connection_closed, nullptr);
+      },
+      [this] { return stopping(); }, counters_, load_);
+  new_task_queue = [] { return new InlineTaskQueue(); };
+}
+
+bool TunedServer::drain(std::chrono::milliseconds limit) {
+  return engine_ == nullptr || engine_->drain(limit);
+}
 
 bool TunedServer::under_pressure() const {
   return shed_at_busy_threads_ > 0 && load_->busy_threads.load() >= shed_at_busy_threads_;
 }
 
 bool TunedServer::process_and_close_socket(socket_t sock) {
+  if (engine_) {
+    engine_->adopt(sock);
+    return true;
+  }
+  return serve_blocking_connection(sock);
+}
+
+bool TunedServer::serve_blocking_connection(socket_t sock) {
   bool ret = false;
   counters_.connections.fetch_add(1, std::memory_order_relaxed);
   try {
@@ -237,16 +131,17 @@ bool TunedServer::process_and_close_socket(socket_t sock) {
       const int on = 1;
       ::setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, &on, sizeof(on));
     }
-    const auto read_timeout = to_ms(read_timeout_sec_, read_timeout_usec_);
-    const auto keep_alive = milliseconds{static_cast<milliseconds::rep>(keep_alive_timeout_sec_) * 1000};
-    ConnectionStream strm(sock, read_timeout, to_ms(write_timeout_sec_, write_timeout_usec_));
+    const auto keep_alive =
+        milliseconds{static_cast<milliseconds::rep>(keep_alive_timeout_sec_) * 1000};
+    ConnectionStream strm(sock, to_ms(read_timeout_sec_, read_timeout_usec_),
+                          to_ms(write_timeout_sec_, write_timeout_usec_));
 
     for (std::size_t left = std::max<std::size_t>(keep_alive_max_count_, 1); left > 0; --left) {
       // Wait for the next request (or the first), in slices, like the library's keep_alive().
       if (!strm.has_buffered_input()) {
         const auto until = Clock::now() + keep_alive;
         bool ready = false;
-        while (svr_sock_ != INVALID_SOCKET) {
+        while (!stopping()) {
           const auto remaining = std::chrono::duration_cast<milliseconds>(until - Clock::now());
           if (remaining.count() <= 0) break;
           if (wait_socket(sock, POLLIN, std::min(remaining, kIdleSlice))) {
@@ -260,9 +155,10 @@ bool TunedServer::process_and_close_socket(socket_t sock) {
         }
         if (!ready) break;
       }
-      if (svr_sock_ == INVALID_SOCKET) break;
+      if (stopping()) break;
 
-      strm.start_request(milliseconds{request_timeout_ms_});
+      strm.start_request(request_timeout_ms_ > 0 ? Clock::now() + milliseconds{request_timeout_ms_}
+                                                 : Clock::time_point::max());
       const bool close_connection = left == 1 || under_pressure();
       bool connection_closed = false;
       ret = process_request(strm, close_connection, connection_closed, nullptr);
@@ -300,24 +196,13 @@ void apply_http_tuning(httplib::Server& server, const HttpTuning& tuning) {
   // Set on the listening socket; Linux copies it to every accepted socket.
   server.set_tcp_nodelay(tuning.tcp_nodelay);
 
-  ElasticThreadPool::Limits limits;
-  limits.min_threads = effective_worker_threads(tuning);
-  limits.max_threads = std::max(tuning.max_worker_threads, limits.min_threads);
-  limits.max_queued = std::max<std::size_t>(tuning.max_pending_connections, 1);
-  limits.idle_timeout = milliseconds{std::max(tuning.idle_thread_timeout_ms, 1L)};
-
-  std::shared_ptr<PoolLoad> load;
   if (auto* tuned = dynamic_cast<TunedServer*>(&server)) {
-    load = tuned->load_;
-    tuned->tcp_nodelay_on_accept_ = tuning.tcp_nodelay;
-    tuned->request_timeout_ms_ = std::max(tuning.request_timeout_ms, 0L);
-    tuned->shed_at_busy_threads_ = tuning.shed_keep_alive_at_busy_threads > 0
-                                       ? tuning.shed_keep_alive_at_busy_threads
-                                       : std::max<std::size_t>(limits.max_threads * 3 / 4, 1);
-  } else {
-    load = std::make_shared<PoolLoad>();
+    tuned->configure(tuning);  // after the setters: it reads them
+    return;
   }
-  server.new_task_queue = [limits, load] { return new ElasticThreadPool(limits, load); };
+  server.new_task_queue = [limits = pool_limits(tuning)] {
+    return new ElasticThreadPool(limits, std::make_shared<PoolLoad>());
+  };
 }
 
 int bind_with_backlog(httplib::Server& server, const char* host, int port, int listen_backlog) {

@@ -2,19 +2,23 @@
 // How the HTTP front is tuned: threads, keep-alive, timeouts, limits, backlog. Every field has a
 // default that serves well on a small machine; service/config.cpp fills it from flags and env.
 //
-// Why each default (measured on Debian 12's libcpp-httplib 0.11.4, whose defaults are compiled
-// into the shared library: CPPHTTPLIB_* macros in our code change nothing, only the runtime
-// setters and the virtual hooks do):
-//  - tcp_nodelay: the library sends the status line + headers and the body with two send()
-//    calls; with Nagle on, the body waits for the ACK of the headers, which the client delays
-//    by ~40 ms: 43 ms per request, 38 requests/s on one keep-alive connection.
-//  - threads: the library serves one connection per thread for the connection's whole life,
-//    from a fixed pool of max(8, cores - 1) threads; once that many keep-alive connections are
-//    open, new connections wait until one closes (up to keep_alive_timeout_s). An elastic,
-//    capped pool (service/elastic_thread_pool.h) removes that stall.
-//  - listen_backlog: the library listens with a backlog of 5; a burst of connects overflows it
-//    and the kernel drops SYNs, so clients retry after 1 s, 3 s, ... bind_with_backlog re-listens.
-//  - TunedServer replaces the library's per-connection loop (see below).
+// Why (measured here on Debian 12's libcpp-httplib 0.11.4, whose defaults are compiled into the
+// shared library: CPPHTTPLIB_* macros in our code change nothing, only the runtime setters and
+// the virtual process_and_close_socket() do; bench/http_rootcause.sh reproduces every number):
+//  - tcp_nodelay: the library sends the status line + headers and the body with two send()s;
+//    with Nagle on, the body waits for the ACK of the headers, which the client delays ~40 ms:
+//    43 ms per request, 38 requests/s on one keep-alive connection (0.6 delayed ACKs per
+//    request); with TCP_NODELAY ~12k requests/s. TunedServer also sends a response in one send().
+//  - threads: the library serves each connection on one thread for its whole life, from a fixed
+//    pool of max(8, cores - 1); with 8 idle keep-alive connections open, a new request waited
+//    5.0 s (the keep-alive timeout). Elastic, capped pool: service/elastic_thread_pool.h.
+//  - idle keep-alive: the library waits for the next request in a 10 ms poll + 1 ms sleep loop:
+//    300 idle connections burnt 1.45 s of CPU per 3 s; TunedServer: 0.01-0.06 s.
+//  - listen_backlog: the library listens with a backlog of 5; wrk -c256 overflowed it
+//    (600-1100 ListenOverflows, ~250 SYN retransmits, 0.9-1.4 s worst latency);
+//    bind_with_backlog() re-listens with 1024: no overflow.
+//  - event_loop: one blocking thread per connection costs ~19-23 us of CPU per request (a third
+//    in context switches) against ~12-14 us on the event loops (nginx: ~8 us).
 
 #include <atomic>
 #include <cstddef>
@@ -29,28 +33,31 @@
 namespace cutcalc::service {
 
 struct HttpTuning {
-  std::size_t worker_threads = 0;            // threads kept ready; 0: max(8, 2 x cores)
-  std::size_t max_worker_threads = 512;      // hard cap on connection-serving threads
+  std::size_t worker_threads = 0;               // threads kept ready; 0: max(8, 2 x cores)
+  std::size_t max_worker_threads = 512;         // hard cap on connection-serving threads
   std::size_t keep_alive_max_requests = 10000;  // requests per keep-alive connection
-  long keep_alive_timeout_s = 5;             // idle keep-alive connection closed after this
-  long read_timeout_ms = 5000;               // longest wait for any single read from a socket
-  long write_timeout_ms = 5000;              // longest wait for any single write to a socket
-  std::size_t max_body_bytes = 64 * 1024;    // larger bodies: 413
+  long keep_alive_timeout_s = 5;                // idle keep-alive connection closed after this
+  long read_timeout_ms = 5000;                  // longest wait for any single read from a socket
+  long write_timeout_ms = 5000;                 // longest wait for any single write to a socket
+  std::size_t max_body_bytes = 64 * 1024;       // larger bodies: 413
   int listen_backlog = 1024;
   bool tcp_nodelay = true;
-  // Added with the elastic pool and TunedServer:
-  bool event_loop = true;                    // TunedServer: serve from epoll loops (see below);
-                                             // false: one blocking thread per connection
-  std::size_t event_loop_threads = 0;        // 0: one per core
-  std::size_t max_pending_connections = 1024;  // waiting for a thread at the cap; beyond, accept()
-                                               // pauses (blocking mode) or the request gets 503
-  long idle_thread_timeout_ms = 30000;       // threads above worker_threads exit when idle this long
-  long request_timeout_ms = 10000;           // TunedServer: one whole request (head + body) must
-                                             // arrive within this, from its first byte (slowloris)
-  std::size_t shed_keep_alive_at_busy_threads = 0;  // TunedServer, blocking mode: from this many
-                                             // busy threads on, idle keep-alive connections are
-                                             // closed and responses say Connection: close;
-                                             // 0: 3/4 of the cap
+  // Added with the elastic pool and TunedServer (comments above each field):
+  // TunedServer serves from epoll loops (see below); false: one blocking thread per connection.
+  bool event_loop = true;
+  // Event loop threads; 0: one per core.
+  std::size_t event_loop_threads = 0;
+  // Connections or requests waiting for a thread at the cap; beyond, accept() pauses (blocking
+  // mode: the kernel's backlog holds them) or the request is answered 503 (event-loop mode).
+  std::size_t max_pending_connections = 1024;
+  // Threads above worker_threads exit when idle this long.
+  long idle_thread_timeout_ms = 30000;
+  // TunedServer: a whole request (head + body) must arrive within this, from its first byte
+  // (slowloris); 0: no limit beyond read_timeout_ms per read.
+  long request_timeout_ms = 10000;
+  // TunedServer, blocking mode: from this many busy threads on, idle keep-alive connections are
+  // closed and responses say Connection: close; 0: 3/4 of max_worker_threads.
+  std::size_t shed_keep_alive_at_busy_threads = 0;
 };
 
 // Threads kept ready for `tuning` on this machine (resolves worker_threads == 0).
@@ -88,6 +95,10 @@ class TunedServer : public httplib::Server {
   ~TunedServer() override;
 
   const PoolLoad& pool_load() const { return *load_; }
+
+  // After stop(): waits until the requests in flight have been answered, at most `limit`.
+  // True when none is left. (Blocking mode needs no wait: its pool joins them on stop.)
+  bool drain(std::chrono::milliseconds limit);
   const ConnectionCounters& counters() const { return counters_; }
 
  private:
@@ -103,7 +114,7 @@ class TunedServer : public httplib::Server {
   ConnectionCounters counters_;
   std::unique_ptr<EventLoopEngine> engine_;  // event-loop mode
   bool tcp_nodelay_on_accept_ = false;
-  long request_timeout_ms_ = 0;  // 0: none
+  long request_timeout_ms_ = 0;           // 0: none
   std::size_t shed_at_busy_threads_ = 0;  // 0: never
 };
 

@@ -17,7 +17,6 @@
 
 #include "polygon_test_support.h"
 
-
 namespace {
 
 using cutcalc::test::polygon::arc_lines;
