@@ -27,6 +27,7 @@ struct RequestState {
   Clock::time_point start{};
   const char* route = "unmatched";  // metric label: a known path or "unmatched", never user text
   bool counted_in_flight = false;
+  std::string request_id;  // also in the X-Request-Id response header; kept to avoid lookups
 };
 thread_local RequestState t_request;
 
@@ -95,11 +96,13 @@ void HttpApp::shutdown() {
 
 void HttpApp::install_middleware() {
   server_->set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-    t_request = RequestState{Clock::now(), "unmatched", true};
+    t_request.start = Clock::now();
+    t_request.route = "unmatched";
+    t_request.counted_in_flight = true;
     metrics_.enter();
     const std::string client_id = req.get_header_value(kRequestIdHeader);
-    res.set_header(kRequestIdHeader,
-                   is_acceptable_request_id(client_id) ? client_id : generate_request_id());
+    t_request.request_id = is_acceptable_request_id(client_id) ? client_id : generate_request_id();
+    res.set_header(kRequestIdHeader, t_request.request_id);
 
     const RouteEntry* route = routes_.find(req.path);
     if (route == nullptr) {
@@ -158,9 +161,12 @@ void HttpApp::install_middleware() {
       metrics_.leave();
     }
     metrics_.observe(t_request.route, req.method, res.status, seconds);
-    log_access({req.method, req.path, res.status, seconds * 1000.0,
-                res.get_header_value(kRequestIdHeader), req.remote_addr});
-    t_request = RequestState{};
+    if (access_log_enabled()) {
+      log_access({req.method, req.path, res.status, seconds * 1000.0,
+                  res.get_header_value(kRequestIdHeader), req.remote_addr});
+    }
+    t_request.route = "unmatched";
+    t_request.counted_in_flight = false;
   });
 }
 
@@ -170,7 +176,7 @@ void HttpApp::install_routes() {
     server_->Post(
         route.path, [handler = route.handler](const httplib::Request& req, httplib::Response& res) {
           const std::string content_type = req.get_header_value("Content-Type");
-          const std::string request_id = res.get_header_value(kRequestIdHeader);
+          const std::string& request_id = t_request.request_id;
           const std::string accept = req.get_header_value("Accept");
           write(res, api::run_json_endpoint({req.path, content_type, req.body, request_id, accept},
                                             handler));

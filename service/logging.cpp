@@ -59,6 +59,8 @@ void setup_logging(const std::string& level, LogFormat format) {
   spdlog::set_default_logger(std::move(app));
 }
 
+bool access_log_enabled() { return g_access && g_access->should_log(spdlog::level::info); }
+
 void log_access(const AccessRecord& record) {
   if (!g_access || !g_access->should_log(spdlog::level::info)) {
     return;

@@ -20,6 +20,8 @@ struct AccessRecord {
   std::string_view remote_addr;
 };
 
+// False when the access log would drop the record (checked before building one).
+bool access_log_enabled();
 void log_access(const AccessRecord& record);
 
 // A JSON string literal for `text` (quotes included), invalid UTF-8 replaced.

@@ -4,14 +4,25 @@
 
 namespace cutcalc::service {
 
+namespace {
+
+// Methods as static labels; anything unusual is one label, so user input never becomes a key.
+std::string_view method_label(std::string_view method) {
+  for (const std::string_view known :
+       {"GET", "HEAD", "POST", "PUT", "DELETE", "PATCH", "OPTIONS"}) {
+    if (method == known) {
+      return known;
+    }
+  }
+  return "other";
+}
+
+}  // namespace
+
 void Metrics::observe(std::string_view route, std::string_view method, int status, double seconds) {
   const std::lock_guard lock(mutex_);
-  ++requests_[std::make_tuple(std::string(route), std::string(method), status)];
-  auto histogram = latency_.find(route);
-  if (histogram == latency_.end()) {
-    histogram = latency_.emplace(std::string(route), Histogram{}).first;
-  }
-  Histogram& h = histogram->second;
+  ++requests_[std::make_tuple(route, method_label(method), status)];
+  Histogram& h = latency_[route];
   for (std::size_t i = 0; i < kBucketsSeconds.size(); ++i) {
     if (seconds <= kBucketsSeconds[i]) {
       ++h.buckets[i];

@@ -19,6 +19,7 @@ class Metrics {
   static constexpr std::array<double, 13> kBucketsSeconds = {
       0.0001, 0.00025, 0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 1.0, 5.0};
 
+  // `route` must outlive the Metrics (a route table entry or a literal).
   void observe(std::string_view route, std::string_view method, int status, double seconds);
   void enter() { in_flight_.fetch_add(1, std::memory_order_relaxed); }
   void leave() { in_flight_.fetch_sub(1, std::memory_order_relaxed); }
@@ -32,8 +33,10 @@ class Metrics {
   };
 
   mutable std::mutex mutex_;
-  std::map<std::tuple<std::string, std::string, int>, std::uint64_t, std::less<>> requests_;
-  std::map<std::string, Histogram, std::less<>> latency_;
+  // Keys point to route labels that live as long as the service and to static method names, so
+  // recording a request allocates nothing after the first of its kind.
+  std::map<std::tuple<std::string_view, std::string_view, int>, std::uint64_t> requests_;
+  std::map<std::string_view, Histogram> latency_;
   std::atomic<std::int64_t> in_flight_{0};
 };
 

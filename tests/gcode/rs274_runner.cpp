@@ -94,15 +94,28 @@ Rs274Run run_rs274(const std::string& program_text, const std::string& executabl
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  // rs274 reads and writes its parameter file (rs274ngc.var) in the working directory: each run
+  // gets its own, or parallel test processes race on one file.
+  posix_spawn_file_actions_addchdir_np(&actions, dir.path().c_str());
 
   std::vector<std::string> args = {executable, "-i", ini, "-g", ngc};
   std::vector<char*> argv;
   for (auto& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);
 
+  // rs274 memory-maps $HOME/.tool.mmap and truncates it on start: two runs sharing a HOME kill
+  // each other with SIGBUS (seen with ctest -j). Each run gets the temp dir as its HOME.
+  std::vector<std::string> environment = {"HOME=" + dir.path()};
+  for (char** entry = environ; *entry != nullptr; ++entry) {
+    if (std::strncmp(*entry, "HOME=", 5) != 0) environment.emplace_back(*entry);
+  }
+  std::vector<char*> envp;
+  for (auto& entry : environment) envp.push_back(entry.data());
+  envp.push_back(nullptr);
+
   pid_t pid = 0;
   const int spawn_status =
-      posix_spawnp(&pid, executable.c_str(), &actions, nullptr, argv.data(), environ);
+      posix_spawnp(&pid, executable.c_str(), &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   if (spawn_status != 0) {
     run.spawn_error = "cannot run '" + executable + "': " + std::strerror(spawn_status) +
