@@ -18,6 +18,7 @@ constexpr std::array kSettings = {
     Setting{"--threads", "CUTCALC_THREADS"},
     Setting{"--log-level", "CUTCALC_LOG_LEVEL"},
     Setting{"--log-format", "CUTCALC_LOG_FORMAT"},
+    Setting{"--cors-origin", "CUTCALC_CORS_ORIGINS"},
 };
 
 std::optional<long> parse_long(std::string_view text, long min, long max) {
@@ -61,6 +62,17 @@ std::string apply(Config& config, std::string_view flag, const std::string& valu
     }
     return "--log-level must be one of trace, debug, info, warn, error, critical, off; got '" +
            value + "'";
+  } else if (flag == "--cors-origin") {
+    // Repeatable, or comma-separated: exact origins such as https://mes.example, or "*".
+    std::string_view rest = value;
+    while (!rest.empty()) {
+      const auto comma = rest.find(',');
+      const std::string_view origin = rest.substr(0, comma);
+      if (!origin.empty()) {
+        config.cors_origins.emplace_back(origin);
+      }
+      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    }
   } else if (flag == "--log-format") {
     if (value == "text") {
       config.log_format = LogFormat::text;
@@ -77,6 +89,7 @@ std::string apply(Config& config, std::string_view flag, const std::string& valu
 
 std::string usage() {
   return "usage: cutcalc [--host H] [--port P] [--threads N] [--log-level L] [--log-format F]\n"
+         "               [--cors-origin ORIGIN ...]\n"
          "  --host H        address to listen on (default 127.0.0.1; env CUTCALC_HOST)\n"
          "  --port P        TCP port, 0 = any free port (default 8080; env CUTCALC_PORT)\n"
          "  --threads N     worker threads kept ready (default: from the core count;\n"
@@ -84,6 +97,9 @@ std::string usage() {
          "  --log-level L   trace|debug|info|warn|error|critical|off (default info;\n"
          "                  env CUTCALC_LOG_LEVEL)\n"
          "  --log-format F  text|json (default text; env CUTCALC_LOG_FORMAT)\n"
+         "  --cors-origin O origin allowed to call from a browser, e.g. https://mes.example;\n"
+         "                  repeatable or comma-separated, * for any (default none;\n"
+         "                  env CUTCALC_CORS_ORIGINS)\n"
          "  --help, --version\n";
 }
 

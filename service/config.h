@@ -17,6 +17,7 @@ struct Config {
   int port = 8080;
   std::string log_level = "info";  // trace, debug, info, warn, error, critical, off
   LogFormat log_format = LogFormat::text;
+  std::vector<std::string> cors_origins;  // browser origins allowed to call; none by default
   HttpTuning http;
 };
 

@@ -66,8 +66,12 @@ void reply_json(httplib::Response& res, const nlohmann::json& body) {
 }  // namespace
 
 HttpApp::HttpApp(Config config)
-    : config_(std::move(config)), server_(std::make_unique<TunedServer>()) {
+    : config_(std::move(config)),
+      server_(std::make_unique<TunedServer>()),
+      cors_(config_.cors_origins) {
   apply_http_tuning(*server_, config_.http);
+  // Browsers must not guess a type other than the declared one (a G-code file is not HTML).
+  server_->set_default_headers({{"X-Content-Type-Options", "nosniff"}});
   install_middleware();
   install_routes();
 }
@@ -110,6 +114,11 @@ void HttpApp::install_middleware() {
       return httplib::Server::HandlerResponse::Handled;
     }
     t_request.route = route->path.c_str();
+    cors_.decorate(req, res);
+    if (req.method == "OPTIONS") {
+      cors_.answer_options(req, res, route->allow);
+      return httplib::Server::HandlerResponse::Handled;
+    }
     if (!RouteTable::allows(*route, req.method)) {
       write_problem(
           req, res,

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "service/config.h"
+#include "service/cors.h"
 #include "service/http_tuning.h"
 #include "service/metrics.h"
 #include "service/route_table.h"
@@ -34,6 +35,7 @@ class HttpApp {
   std::unique_ptr<TunedServer> server_;
   Metrics metrics_;
   RouteTable routes_;
+  CorsPolicy cors_;
   std::atomic<bool> draining_{false};
 };
 

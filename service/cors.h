@@ -1,0 +1,31 @@
+#pragma once
+// Cross-origin access for browser front ends: only the configured origins (none by default) get
+// CORS headers; preflight requests are answered without reaching a handler.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <httplib.h>
+
+namespace cutcalc::service {
+
+class CorsPolicy {
+ public:
+  explicit CorsPolicy(std::vector<std::string> allowed_origins);
+
+  // Adds the CORS response headers when the request's Origin is allowed.
+  void decorate(const httplib::Request& req, httplib::Response& res) const;
+
+  // An OPTIONS request to a known route: 204 with Allow, plus the preflight answer when the
+  // Origin is allowed. `allow` is the route's method list.
+  void answer_options(const httplib::Request& req, httplib::Response& res,
+                      const std::string& allow) const;
+
+ private:
+  [[nodiscard]] bool allows(std::string_view origin) const;
+
+  std::vector<std::string> origins_;  // exact origins, or "*" for any
+};
+
+}  // namespace cutcalc::service
