@@ -13,4 +13,6 @@ for preset in release dev; do
   echo "=== ${preset}: test"
   ctest --preset "$preset" -j 2
 done
-echo "=== all tests passed (release and sanitizer builds)"
+echo "=== Kubernetes manifests: render offline and validate"
+scripts/ci-k8s.sh
+echo "=== all tests passed"

@@ -4,8 +4,11 @@
 
 #include <csignal>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "support/service_process.h"
 
@@ -70,6 +73,11 @@ TEST(GracefulShutdown, AccessLogHasOneLinePerRequestWithItsId) {
             std::string::npos)
       << log;
   EXPECT_NE(log.find(R"("request_id":"probe-7")"), std::string::npos) << log;
+  // Every line, the service's own included, is one JSON object.
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_TRUE(line.empty() || nlohmann::json::accept(line)) << line;
+  }
 }
 
 }  // namespace
