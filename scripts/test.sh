@@ -13,6 +13,8 @@ for preset in release dev; do
   echo "=== ${preset}: test"
   ctest --preset "$preset" -j 2
 done
+echo "=== contract: lint openapi.yaml, replay every reference and bad-input case through Prism"
+scripts/ci-contract.sh
 echo "=== Kubernetes manifests: render offline and validate"
 scripts/ci-k8s.sh
 echo "=== all tests passed"

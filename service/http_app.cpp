@@ -32,6 +32,7 @@ struct RequestState {
 thread_local RequestState t_request;
 
 constexpr const char* kRequestIdHeader = "X-Request-Id";
+constexpr const char* kNoSniffHeader = "X-Content-Type-Options";
 
 void write(httplib::Response& res, const api::ApiResponse& response) {
   res.status = response.status;
@@ -70,8 +71,6 @@ HttpApp::HttpApp(Config config)
       server_(std::make_unique<TunedServer>()),
       cors_(config_.cors_origins) {
   apply_http_tuning(*server_, config_.http);
-  // Browsers must not guess a type other than the declared one (a G-code file is not HTML).
-  server_->set_default_headers({{"X-Content-Type-Options", "nosniff"}});
   install_middleware();
   install_routes();
 }
@@ -104,6 +103,10 @@ void HttpApp::install_middleware() {
     t_request.route = "unmatched";
     t_request.counted_in_flight = true;
     metrics_.enter();
+    // Browsers must not guess a type other than the declared one (a G-code file is not HTML).
+    // Set per response: the library's set_default_headers() broke every response of the -O3
+    // build against Debian's libcpp-httplib 0.11.4 (empty replies), while the ASan build worked.
+    res.set_header(kNoSniffHeader, "nosniff");
     const std::string client_id = req.get_header_value(kRequestIdHeader);
     t_request.request_id = is_acceptable_request_id(client_id) ? client_id : generate_request_id();
     res.set_header(kRequestIdHeader, t_request.request_id);
@@ -137,6 +140,9 @@ void HttpApp::install_middleware() {
       httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
         if (!res.body.empty()) {
           return httplib::Server::HandlerResponse::Unhandled;
+        }
+        if (!res.has_header(kNoSniffHeader)) {
+          res.set_header(kNoSniffHeader, "nosniff");
         }
         if (!res.has_header(kRequestIdHeader)) {
           res.set_header(kRequestIdHeader, generate_request_id());

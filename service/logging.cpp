@@ -37,10 +37,10 @@ std::string json_quoted(std::string_view text) {
 void setup_logging(const std::string& level, LogFormat format) {
   g_format = format;
   // One sink each: a sink holds one formatter, and the two line layouts differ in JSON mode.
-  auto app = std::make_shared<spdlog::logger>(
-      "cutcalc", std::make_shared<spdlog::sinks::stdout_sink_mt>());
-  g_access = std::make_shared<spdlog::logger>(
-      "access", std::make_shared<spdlog::sinks::stdout_sink_mt>());
+  auto app = std::make_shared<spdlog::logger>("cutcalc",
+                                              std::make_shared<spdlog::sinks::stdout_sink_mt>());
+  g_access =
+      std::make_shared<spdlog::logger>("access", std::make_shared<spdlog::sinks::stdout_sink_mt>());
   auto app_format = std::make_unique<spdlog::pattern_formatter>(spdlog::pattern_time_type::utc);
   auto access_format = std::make_unique<spdlog::pattern_formatter>(spdlog::pattern_time_type::utc);
   if (format == LogFormat::json) {

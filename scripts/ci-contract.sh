@@ -1,0 +1,138 @@
+#!/usr/bin/env bash
+# Contract step: lints openapi.yaml with Redocly CLI and Spectral, then replays every reference
+# case (../shared/reference/*.json), the operations endpoints and a list of bad-input requests
+# through Prism's validating proxy in front of a release cutcalc (tools/contract/replay.mjs).
+# Fails on any lint error and on any response, success or problem, that does not match its schema.
+#
+# Environment (all optional):
+#   CUTCALC_BIN             cutcalc binary (default build/release/service/cutcalc, built if missing)
+#   CONTRACT_OPENAPI        the document to check and to serve through Prism (default openapi.yaml)
+#   CUTCALC_REFERENCE_DIR   reference cases (default ../shared/reference, relative to the repo)
+#   REPLAY_VERBOSE=1        print every exchange
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+TOOLS=$ROOT/tools/contract
+OPENAPI=$(realpath "${CONTRACT_OPENAPI:-$ROOT/openapi.yaml}")
+BIN=${CUTCALC_BIN:-$ROOT/build/release/service/cutcalc}
+STARTED=$(date +%s)
+
+export REDOCLY_TELEMETRY=off REDOCLY_SUPPRESS_UPDATE_NOTICE=true SCARF_ANALYTICS=false \
+  NO_UPDATE_NOTIFIER=1 npm_config_update_notifier=false npm_config_fund=false npm_config_audit=false
+
+WORK=$(mktemp -d)
+PIDS=()
+cleanup() {
+  local pid
+  for pid in "${PIDS[@]}"; do kill "$pid" 2>/dev/null || true; done
+  for pid in "${PIDS[@]}"; do wait "$pid" 2>/dev/null || true; done
+  rm -rf "$WORK"
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+
+die() {
+  echo "ci-contract: $*" >&2
+  exit 1
+}
+
+# ---------------------------------------------------------------- Node.js and the tools
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  echo "=== contract: installing nodejs and npm (apt)"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update
+  apt-get install -y --no-install-recommends nodejs npm
+fi
+# shellcheck disable=SC2016 # JavaScript, not shell
+node -e '
+  const [maj, min] = process.versions.node.split(".").map(Number);
+  if (maj < 20 || (maj === 20 && min < 19)) {
+    console.error(`ci-contract: Node.js ${process.versions.node} is too old: Redocly CLI 2 needs >= 20.19`);
+    process.exit(1);
+  }' || exit 1
+echo "=== contract: npm ci (tools/contract; node $(node --version), npm $(npm --version 2>/dev/null))"
+(cd "$TOOLS" && npm ci --no-audit --no-fund --loglevel=error)
+INSTALLED=$(date +%s)
+
+# ---------------------------------------------------------------- lint
+echo "=== contract: redocly lint $(basename "$OPENAPI")"
+"$TOOLS/node_modules/.bin/redocly" lint --config "$TOOLS/redocly.yaml" "$OPENAPI" ||
+  die "Redocly CLI reports errors in $OPENAPI"
+echo "=== contract: spectral lint $(basename "$OPENAPI")"
+"$TOOLS/node_modules/.bin/spectral" lint --ruleset "$TOOLS/.spectral.yaml" --fail-severity error "$OPENAPI" ||
+  die "Spectral reports errors in $OPENAPI"
+
+# ---------------------------------------------------------------- cutcalc
+if [[ ! -x "$BIN" ]]; then
+  echo "=== contract: building cutcalc (release)"
+  cmake --preset release
+  cmake --build --preset release --target cutcalc -j 2
+  BIN=$ROOT/build/release/service/cutcalc
+fi
+"$BIN" --host 127.0.0.1 --port 0 --threads 2 --log-level info --log-format text >"$WORK/cutcalc.log" 2>&1 &
+CUTCALC_PID=$!
+PIDS+=("$CUTCALC_PID")
+CUTCALC_PORT=
+for _ in $(seq 1 200); do
+  CUTCALC_PORT=$(sed -n 's/.*listening on http:\/\/127\.0\.0\.1:\([0-9][0-9]*\).*/\1/p' "$WORK/cutcalc.log" | head -n 1)
+  [[ -n "$CUTCALC_PORT" ]] && break
+  kill -0 "$CUTCALC_PID" 2>/dev/null || { cat "$WORK/cutcalc.log" >&2; die "cutcalc exited at start"; }
+  sleep 0.1
+done
+[[ -n "$CUTCALC_PORT" ]] || { cat "$WORK/cutcalc.log" >&2; die "cutcalc did not report its port within 20 s"; }
+
+# ---------------------------------------------------------------- Prism proxies
+# Two free loopback ports (Prism reports its port only at log level info, which also logs every
+# request); the ports are held until just before Prism binds them.
+read -r STRICT_PORT RELAXED_PORT < <(node -e '
+  const net = require("net");
+  const a = net.createServer().listen(0, "127.0.0.1", () => {
+    const b = net.createServer().listen(0, "127.0.0.1", () => {
+      console.log(a.address().port, b.address().port);
+      a.close(); b.close();
+    });
+  });')
+[[ -n "${RELAXED_PORT:-}" ]] || die "cannot find two free loopback ports"
+start_prism() { # port log-name extra-args...
+  local port=$1 name=$2
+  shift 2
+  "$TOOLS/node_modules/.bin/prism" proxy "$OPENAPI" "http://127.0.0.1:$CUTCALC_PORT" \
+    --errors --cors=false -v warn -h 127.0.0.1 -p "$port" "$@" >"$WORK/prism-$name.log" 2>&1 &
+  PIDS+=("$!")
+  eval "PRISM_${name^^}_PID=$!"
+}
+start_prism "$STRICT_PORT" strict
+start_prism "$RELAXED_PORT" relaxed --validate-request=false
+wait_port() { # port pid name
+  for _ in $(seq 1 900); do
+    if (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null; then return 0; fi
+    kill -0 "$2" 2>/dev/null || { cat "$WORK/prism-$3.log" >&2; die "Prism ($3) exited at start"; }
+    sleep 0.1
+  done
+  cat "$WORK/prism-$3.log" >&2
+  die "Prism ($3) did not listen on port $1 within 90 s"
+}
+wait_port "$STRICT_PORT" "$PRISM_STRICT_PID" strict
+wait_port "$RELAXED_PORT" "$PRISM_RELAXED_PID" relaxed
+
+# ---------------------------------------------------------------- replay
+echo "=== contract: replay through Prism (cutcalc :$CUTCALC_PORT, Prism :$STRICT_PORT strict, :$RELAXED_PORT relaxed)"
+status=0
+PRISM_STRICT_URL="http://127.0.0.1:$STRICT_PORT" PRISM_RELAXED_URL="http://127.0.0.1:$RELAXED_PORT" \
+  CUTCALC_URL="http://127.0.0.1:$CUTCALC_PORT" OPENAPI_FILE="$OPENAPI" \
+  node "$TOOLS/replay.mjs" || status=$?
+for name in strict relaxed; do
+  pid_var="PRISM_${name^^}_PID"
+  if ! kill -0 "${!pid_var}" 2>/dev/null; then
+    echo "ci-contract: Prism ($name) died during the replay:" >&2
+    tail -n 30 "$WORK/prism-$name.log" >&2
+    status=1
+  fi
+done
+kill -0 "$CUTCALC_PID" 2>/dev/null || { tail -n 30 "$WORK/cutcalc.log" >&2; echo "ci-contract: cutcalc died during the replay" >&2; status=1; }
+ENDED=$(date +%s)
+if [[ $status -ne 0 ]]; then
+  echo "=== contract: FAILED ($((ENDED - STARTED)) s)" >&2
+  exit 1
+fi
+echo "=== contract: passed: Redocly and Spectral clean, replay clean ($((ENDED - INSTALLED)) s after npm ci, $((ENDED - STARTED)) s in all)"
