@@ -6,17 +6,27 @@
 #   node   bench/peers/node_echo.js (Node.js http echo, one process)
 # Each round runs every (connections, target) pair once, for --duration seconds, with the target
 # order rotated from round to round; the table reports medians over the rounds.
+# --endpoints adds a second table: every endpoint, one request each (the first case expecting 200
+# in the reference cases; the polygon endpoint once as JSON and once with Accept: text/plain; the
+# GET endpoints too, compared with nginx only, as the echoes answer POST only), at
+# --endpoint-conns connections, each request sent to the peers as well (bench/requests.lua).
 #
 # usage: bench/http_bench.sh [--cutcalc PATH] [--echo PATH] [--rounds N] [--duration S]
 #                            [--threads N] [--conns "1 8 64 256"] [--strict]
+#                            [--endpoints | --endpoints-only] [--endpoint-conns "64"]
+#                            [--reference DIR]
 #   env: CUTCALC_BIN, HTTPLIB_ECHO_BIN, HTTP_BENCH_ROUNDS, HTTP_BENCH_DURATION,
-#        HTTP_BENCH_THREADS, HTTP_BENCH_CONNS (flags win)
+#        HTTP_BENCH_THREADS, HTTP_BENCH_CONNS, HTTP_BENCH_ENDPOINT_CONNS, CUTCALC_REFERENCE_DIR
+#        (flags win)
 #   --cutcalc   default build/release/service/cutcalc, started as
 #               cutcalc --host 127.0.0.1 --port P --threads N --log-level warn
 #   --echo      default build/release/bench/peers/httplib_echo
 #   --threads   cutcalc's and the echo's --threads (threads kept ready), default 8
 #   --strict    exit 3 if a goal fails
-# Output: a Markdown table and PASS/FAIL lines on stdout; raw wrk output, results.jsonl and
+#   --endpoints       also the per-endpoint table; --endpoints-only: only that table
+#   --endpoint-conns  connections for the per-endpoint table, default 64
+#   --reference       reference cases, default ../shared/reference beside the repo
+# Output: Markdown tables and PASS/FAIL lines on stdout; raw wrk output, results.jsonl and
 # summary.md under bench/results/<timestamp>/ (gitignored). Every server is started and stopped
 # here; nothing is left running, also on Ctrl-C.
 set -euo pipefail
@@ -28,6 +38,10 @@ ROUNDS="${HTTP_BENCH_ROUNDS:-3}"
 DURATION="${HTTP_BENCH_DURATION:-5}"
 THREADS="${HTTP_BENCH_THREADS:-8}"
 CONNS="${HTTP_BENCH_CONNS:-1 8 64 256}"
+ENDPOINT_CONNS="${HTTP_BENCH_ENDPOINT_CONNS:-64}"
+REFERENCE="${CUTCALC_REFERENCE_DIR:-$ROOT/../shared/reference}"
+MAIN_TABLE=1
+ENDPOINT_TABLE=0
 STRICT=0
 WRK_THREADS=2
 PATH_UNDER_TEST="/v1/entry-length"
@@ -44,7 +58,11 @@ while [[ $# -gt 0 ]]; do
     --threads) THREADS="$2"; shift 2 ;;
     --conns) CONNS="$2"; shift 2 ;;
     --strict) STRICT=1; shift ;;
-    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
+    --endpoints) ENDPOINT_TABLE=1; shift ;;
+    --endpoints-only) ENDPOINT_TABLE=1; MAIN_TABLE=0; shift ;;
+    --endpoint-conns) ENDPOINT_CONNS="$2"; shift 2 ;;
+    --reference) REFERENCE="$2"; shift 2 ;;
+    -h|--help) sed -n '2,36p' "$0"; exit 0 ;;
     *) die "unknown argument: $1 (see --help)" ;;
   esac
 done
@@ -52,9 +70,12 @@ done
 [[ "$ROUNDS" =~ ^[0-9]+$ && "$ROUNDS" -ge 1 && "$ROUNDS" -le 20 ]] || die "--rounds must be 1..20"
 [[ "$DURATION" =~ ^[0-9]+$ && "$DURATION" -ge 1 && "$DURATION" -le 60 ]] || die "--duration must be 1..60 s"
 [[ "$THREADS" =~ ^[0-9]+$ && "$THREADS" -ge 1 ]] || die "--threads must be a positive integer"
-for c in $CONNS; do
+for c in $CONNS $ENDPOINT_CONNS; do
   [[ "$c" =~ ^[0-9]+$ && "$c" -ge 1 && "$c" -le 1000 ]] || die "connection counts must be 1..1000"
 done
+if [[ $ENDPOINT_TABLE -eq 1 ]]; then
+  [[ -d "$REFERENCE" ]] || die "reference cases not found: $REFERENCE (--reference DIR)"
+fi
 [[ -x "$CUTCALC_BIN" ]] || die "cutcalc binary not found: $CUTCALC_BIN (cmake --preset release && cmake --build --preset release)"
 [[ -x "$ECHO_BIN" ]] || die "httplib_echo binary not found: $ECHO_BIN"
 for tool in wrk nginx node curl python3; do
@@ -161,6 +182,56 @@ start_target node node "$ROOT/bench/peers/node_echo.js" @PORT@ 127.0.0.1
 
 TARGETS=(cutcalc echo nginx node)
 
+# --- per-endpoint requests (--endpoints) -------------------------------------------------------
+# $RESULTS/requests/<case>.tsv: one request in bench/requests.lua's format; ENDPOINT_CASES lists
+# "<case> <kind>" with kind post (all targets) or get (cutcalc and nginx).
+ENDPOINT_CASES=()
+if [[ $ENDPOINT_TABLE -eq 1 ]]; then
+  mkdir -p "$RESULTS/requests"
+  python3 - "$REFERENCE" "$RESULTS/requests" "${PORTS[cutcalc]}" >"$RESULTS/endpoint_cases.txt" <<'PY' \
+    || die "could not prepare the per-endpoint requests (see above)"
+import glob, http.client, json, os, sys
+
+reference, out_dir, port = sys.argv[1], sys.argv[2], int(sys.argv[3])
+cases = []  # (name, kind, method, path, accept, body)
+for path in sorted(glob.glob(os.path.join(reference, "*.json"))):
+    doc = json.load(open(path))
+    endpoint = doc["endpoint"]
+    first = next((c for c in doc["cases"] if c.get("expect", {}).get("status") == 200), None)
+    if first is None:
+        sys.exit(f"http_bench: no case expecting 200 in {path}")
+    body = json.dumps(first["request"], separators=(",", ":"))
+    name = endpoint.removeprefix("/v1/").replace("/", "-")
+    if endpoint == "/v1/polygon-hole/gcode":
+        cases.append((name + ".json", "post", "POST", endpoint, "-", body))
+        cases.append((name + ".text", "post", "POST", endpoint, "text/plain", body))
+    else:
+        cases.append((name, "post", "POST", endpoint, "-", body))
+for endpoint in ("/healthz", "/readyz", "/version", "/metrics", "/openapi.yaml"):
+    cases.append(("GET" + endpoint, "get", "GET", endpoint, "-", ""))
+bad = 0
+for name, kind, method, path, accept, body in cases:
+    headers = {"Content-Type": "application/json"} if method == "POST" else {}
+    if accept != "-":
+        headers["Accept"] = accept
+    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
+    conn.request(method, path, body=body.encode() if method == "POST" else None, headers=headers)
+    resp = conn.getresponse()
+    answer = resp.read()
+    conn.close()
+    if resp.status != 200:
+        print(f"http_bench: cutcalc answered {method} {path} with {resp.status}: {answer[:200]!r}",
+              file=sys.stderr)
+        bad += 1
+    file_name = name.replace("/", "_")
+    with open(os.path.join(out_dir, file_name + ".tsv"), "w") as f:
+        f.write(f"{method}\t{path}\t{accept}\t{body}\n")
+    print(f"{file_name} {kind} {len(body)} {len(answer)}")
+sys.exit(1 if bad else 0)
+PY
+  while read -r case_name kind _; do ENDPOINT_CASES+=("$case_name $kind"); done <"$RESULTS/endpoint_cases.txt"
+fi
+
 {
   echo "date: $STAMP"
   echo "host: $(uname -srm), $CORES cores, load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -170,7 +241,14 @@ TARGETS=(cutcalc echo nginx node)
   echo "nginx: $("$NGINX_BIN" -v 2>&1 | sed 's/^nginx version: //'), worker_processes $CORES"
   echo "node: $(node --version), one process"
   echo "wrk: $(wrk -v 2>&1 | head -1 | cut -d' ' -f1-2), $WRK_THREADS threads (1 at 1 connection), ${DURATION} s per run"
-  echo "rounds: $ROUNDS; connections: $CONNS; body: $BODY"
+  echo "rounds: $ROUNDS"
+  [[ $MAIN_TABLE -eq 1 ]] && echo "entry-length table: connections $CONNS; body: $BODY"
+  if [[ $ENDPOINT_TABLE -eq 1 ]]; then
+    echo "per-endpoint table: $ENDPOINT_CONNS connections; requests from $REFERENCE (first case expecting 200)"
+    echo "  case kind request_bytes cutcalc_response_bytes:"
+    sed 's/^/    /' "$RESULTS/endpoint_cases.txt"
+  fi
+  true
 } >"$RESULTS/meta.txt"
 
 # --- runs ------------------------------------------------------------------------------------
@@ -184,22 +262,33 @@ server_cpu_ticks() {  # user+system CPU ticks of a server and its children (ngin
   echo "$total"
 }
 
-run_wrk() {  # target conns round -> appends one JSON line to results.jsonl
-  local target="$1" conns="$2" round="$3" threads raw cpu_before cpu_after
+# target conns round [case] -> appends one JSON line to results.jsonl. Without a case: the
+# entry-length benchmark body (bench/wrk_post.lua); with one: $RESULTS/requests/<case>.tsv.
+run_wrk() {
+  local target="$1" conns="$2" round="$3" case_name="${4:-}" threads raw cpu_before cpu_after
+  local script_args=()
   threads=$(( conns < WRK_THREADS ? conns : WRK_THREADS ))
   cpu_before="$(server_cpu_ticks "${PIDS[$target]}")"
-  raw="$RESULTS/raw/${target}_c${conns}_r${round}.txt"
+  if [[ -z "$case_name" ]]; then
+    raw="$RESULTS/raw/${target}_c${conns}_r${round}.txt"
+    script_args=(-s "$ROOT/bench/wrk_post.lua" "http://127.0.0.1:${PORTS[$target]}$PATH_UNDER_TEST")
+  else
+    raw="$RESULTS/raw/${case_name}_${target}_c${conns}_r${round}.txt"
+    script_args=(-s "$ROOT/bench/requests.lua" "http://127.0.0.1:${PORTS[$target]}/"
+                 -- "$RESULTS/requests/$case_name.tsv")
+  fi
   timeout $((DURATION + 20)) wrk -t"$threads" -c"$conns" -d"${DURATION}s" --latency \
-    -s "$ROOT/bench/wrk_post.lua" "http://127.0.0.1:${PORTS[$target]}$PATH_UNDER_TEST" >"$raw" 2>&1 &
+    "${script_args[@]}" >"$raw" 2>&1 &
   WRK_PID=$!
   wait "$WRK_PID" || true
   WRK_PID=""
   cpu_after="$(server_cpu_ticks "${PIDS[$target]}")"
-  local line cpu_ms
+  local line cpu_ms case_json=""
   cpu_ms=$(( (cpu_after - cpu_before) * 1000 / CLK_TCK ))
   line="$(grep -m1 '^WRK_RESULT ' "$raw" | cut -d' ' -f2- || true)"
   [[ -n "$line" ]] || line='{"failed":1}'
-  echo "{\"target\":\"$target\",\"conns\":$conns,\"round\":$round,\"server_cpu_ms\":$cpu_ms,\"wrk\":$line}" >>"$RESULTS/results.jsonl"
+  [[ -n "$case_name" ]] && case_json="\"case\":\"$case_name\","
+  echo "{$case_json\"target\":\"$target\",\"conns\":$conns,\"round\":$round,\"server_cpu_ms\":$cpu_ms,\"wrk\":$line}" >>"$RESULTS/results.jsonl"
   kill -0 "${PIDS[$target]}" 2>/dev/null || die "$target died during the run (see $RESULTS/raw)"
 }
 
@@ -209,14 +298,31 @@ for target in "${TARGETS[@]}"; do
     "http://127.0.0.1:${PORTS[$target]}$PATH_UNDER_TEST" >/dev/null 2>&1 || true
 done
 
+: >"$RESULTS/results.jsonl"
 n_targets=${#TARGETS[@]}
 for ((round = 1; round <= ROUNDS; round++)); do
-  for conns in $CONNS; do
-    for ((k = 0; k < n_targets; k++)); do
-      target="${TARGETS[$(( (k + round - 1) % n_targets ))]}"
-      echo "http_bench: round $round/$ROUNDS, $conns connections, $target" >&2
-      run_wrk "$target" "$conns" "$round"
-      sleep 0.5
+  if [[ $MAIN_TABLE -eq 1 ]]; then
+    for conns in $CONNS; do
+      for ((k = 0; k < n_targets; k++)); do
+        target="${TARGETS[$(( (k + round - 1) % n_targets ))]}"
+        echo "http_bench: round $round/$ROUNDS, $conns connections, $target" >&2
+        run_wrk "$target" "$conns" "$round"
+        sleep 0.5
+      done
+    done
+  fi
+  for entry in ${ENDPOINT_CASES[@]+"${ENDPOINT_CASES[@]}"}; do
+    case_name="${entry% *}"
+    kind="${entry#* }"
+    if [[ "$kind" == get ]]; then case_targets=(cutcalc nginx); else case_targets=("${TARGETS[@]}"); fi
+    n_case=${#case_targets[@]}
+    for conns in $ENDPOINT_CONNS; do
+      for ((k = 0; k < n_case; k++)); do
+        target="${case_targets[$(( (k + round - 1) % n_case ))]}"
+        echo "http_bench: round $round/$ROUNDS, $case_name, $conns connections, $target" >&2
+        run_wrk "$target" "$conns" "$round" "$case_name"
+        sleep 0.5
+      done
     done
   done
 done
@@ -230,10 +336,14 @@ import json, statistics, sys, os
 results_dir = sys.argv[1]
 rows = [json.loads(l) for l in open(os.path.join(results_dir, "results.jsonl"))]
 targets = ["cutcalc", "echo", "nginx", "node"]
-conns_list = sorted({r["conns"] for r in rows})
+main_rows = [r for r in rows if "case" not in r]
+case_rows = [r for r in rows if "case" in r]
 
-def agg(target, conns):
-    picked = [r for r in rows if r["target"] == target and r["conns"] == conns]
+def agg(rows, target, conns, case=None):
+    picked = [r for r in rows if r["target"] == target and r["conns"] == conns
+              and r.get("case") == case]
+    if not picked:
+        return "absent"
     runs = [r["wrk"] for r in picked]
     ok = [w for w in runs if "failed" not in w]
     if not ok:
@@ -254,48 +364,93 @@ def agg(target, conns):
         "failed_runs": len(runs) - len(ok),
     }
 
-table = {(t, c): agg(t, c) for t in targets for c in conns_list}
-out = []
-out.append("| target | conns | req/s median (min-max) | p50 ms | p99 ms | server CPU us/req | non-2xx | socket errors c/r/w/t | runs |")
-out.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
-for c in conns_list:
-    for t in targets:
-        a = table[(t, c)]
-        if a is None:
-            out.append(f"| {t} | {c} | wrk failed | | | | | | 0 |")
-            continue
-        runs = f"{a['runs']}" + (f" (+{a['failed_runs']} failed)" if a["failed_runs"] else "")
-        out.append(f"| {t} | {c} | {a['rps']:,.0f} ({a['rps_min']:,.0f}-{a['rps_max']:,.0f}) | "
-                   f"{a['p50']:.3f} | {a['p99']:.3f} | {a['cpu_us']:.1f} | {a['non2xx']} | "
-                   f"{a['sock_detail']} | {runs} |")
+def cells(a):
+    runs = f"{a['runs']}" + (f" (+{a['failed_runs']} failed)" if a["failed_runs"] else "")
+    return (f"{a['rps']:,.0f} ({a['rps_min']:,.0f}-{a['rps_max']:,.0f}) | {a['p50']:.3f} | "
+            f"{a['p99']:.3f} | {a['cpu_us']:.1f} | {a['non2xx']} | {a['sock_detail']} | {runs} |")
 
+out = []
 verdicts = []
 def verdict(ok, text):
     verdicts.append(ok)
     out.append(("PASS " if ok else "FAIL ") + text)
 
-out.append("")
-for c in conns_list:
-    cc, ec = table[("cutcalc", c)], table[("echo", c)]
-    if cc and ec:
-        verdict(cc["rps"] >= 0.9 * ec["rps"],
-                f"throughput >= 90% of the bare echo at {c} conns: cutcalc {cc['rps']:,.0f} vs echo "
-                f"{ec['rps']:,.0f} req/s ({100.0 * cc['rps'] / ec['rps']:.0f}%)")
-if 64 in conns_list:
-    cc, nd = table[("cutcalc", 64)], table[("node", 64)]
-    if cc and nd:
-        verdict(cc["rps"] >= 2.0 * nd["rps"],
-                f"throughput >= 2x Node's at 64 conns: cutcalc {cc['rps']:,.0f} vs node "
-                f"{nd['rps']:,.0f} req/s ({cc['rps'] / nd['rps']:.2f}x)")
-for c in conns_list:
-    cc, ng = table[("cutcalc", c)], table[("nginx", c)]
-    if cc and ng:
-        verdict(cc["p99"] <= 2.0 * ng["p99"],
-                f"p99 within 2x nginx's at {c} conns: cutcalc {cc['p99']:.3f} ms vs nginx "
-                f"{ng['p99']:.3f} ms ({cc['p99'] / ng['p99']:.2f}x)")
-cut = [table[("cutcalc", c)] for c in conns_list]
-errors = sum(a["non2xx"] + a["sock"] for a in cut if a)
-failed = sum(1 for a in cut if a is None) + sum(a["failed_runs"] for a in cut if a)
+cut_aggs = []  # every cutcalc aggregate, for the error verdict
+if main_rows:
+    conns_list = sorted({r["conns"] for r in main_rows})
+    table = {(t, c): agg(main_rows, t, c) for t in targets for c in conns_list}
+    out.append("POST /v1/entry-length:")
+    out.append("")
+    out.append("| target | conns | req/s median (min-max) | p50 ms | p99 ms | server CPU us/req | non-2xx | socket errors c/r/w/t | runs |")
+    out.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for c in conns_list:
+        for t in targets:
+            a = table[(t, c)]
+            if a is None:
+                out.append(f"| {t} | {c} | wrk failed | | | | | | 0 |")
+            elif a != "absent":
+                out.append(f"| {t} | {c} | " + cells(a))
+    out.append("")
+    for c in conns_list:
+        cc, ec = table[("cutcalc", c)], table[("echo", c)]
+        if cc and ec and cc != "absent" and ec != "absent":
+            verdict(cc["rps"] >= 0.9 * ec["rps"],
+                    f"throughput >= 90% of the bare echo at {c} conns: cutcalc {cc['rps']:,.0f} vs echo "
+                    f"{ec['rps']:,.0f} req/s ({100.0 * cc['rps'] / ec['rps']:.0f}%)")
+    if 64 in conns_list:
+        cc, nd = table[("cutcalc", 64)], table[("node", 64)]
+        if cc and nd and cc != "absent" and nd != "absent":
+            verdict(cc["rps"] >= 2.0 * nd["rps"],
+                    f"throughput >= 2x Node's at 64 conns: cutcalc {cc['rps']:,.0f} vs node "
+                    f"{nd['rps']:,.0f} req/s ({cc['rps'] / nd['rps']:.2f}x)")
+    for c in conns_list:
+        cc, ng = table[("cutcalc", c)], table[("nginx", c)]
+        if cc and ng and cc != "absent" and ng != "absent":
+            verdict(cc["p99"] <= 2.0 * ng["p99"],
+                    f"p99 within 2x nginx's at {c} conns: cutcalc {cc['p99']:.3f} ms vs nginx "
+                    f"{ng['p99']:.3f} ms ({cc['p99'] / ng['p99']:.2f}x)")
+    cut_aggs += [table[("cutcalc", c)] for c in conns_list]
+
+if case_rows:
+    cases = list(dict.fromkeys(r["case"] for r in case_rows))
+    conns_list = sorted({r["conns"] for r in case_rows})
+    if out:
+        out.append("")
+    out.append("Every endpoint (one request each; the peers get the same request: echo and node "
+               "echo its body, nginx answers its fixed JSON):")
+    out.append("")
+    out.append("| endpoint | target | conns | req/s median (min-max) | p50 ms | p99 ms | server CPU us/req | non-2xx | socket errors c/r/w/t | runs |")
+    out.append("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    ratios = []
+    for case in cases:
+        for c in conns_list:
+            per = {t: agg(case_rows, t, c, case) for t in targets}
+            for t in targets:
+                a = per[t]
+                if a is None:
+                    out.append(f"| {case} | {t} | {c} | wrk failed | | | | | | 0 |")
+                elif a != "absent":
+                    out.append(f"| {case} | {t} | {c} | " + cells(a))
+            cut_aggs.append(per["cutcalc"])
+            cc = per["cutcalc"]
+            if cc and cc != "absent":
+                parts = []
+                for t, label in (("echo", "echo"), ("node", "node")):
+                    p = per[t]
+                    if p and p != "absent":
+                        parts.append(f"{100.0 * cc['rps'] / p['rps']:.0f}% of {label}'s req/s")
+                ng = per["nginx"]
+                if ng and ng != "absent":
+                    parts.append(f"p99 {cc['p99'] / ng['p99']:.2f}x nginx's")
+                ratios.append(f"- {case} at {c} conns: cutcalc {cc['rps']:,.0f} req/s, "
+                              f"{cc['cpu_us']:.1f} us CPU/req; " + ", ".join(parts))
+    out.append("")
+    out.extend(ratios)
+    out.append("")
+
+errors = sum(a["non2xx"] + a["sock"] for a in cut_aggs if a and a != "absent")
+failed = (sum(1 for a in cut_aggs if a is None)
+          + sum(a["failed_runs"] for a in cut_aggs if a and a != "absent"))
 verdict(errors == 0 and failed == 0,
         f"no errors: cutcalc non-2xx + socket errors = {errors} over all runs"
         + (f", {failed} wrk runs failed" if failed else ""))

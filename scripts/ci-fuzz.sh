@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# Fuzzing (CI step): builds the libFuzzer harnesses of fuzz/ with clang++ (ASan + UBSan, coverage
+# instrumentation; a project of its own in build/fuzz, apart from the gcc build), writes their seed
+# corpora from the reference requests (../shared/reference/*.json, each case's `request`), and runs
+# every harness for a bounded time. Fails on any crash, sanitizer report, timeout (> 5 s for one
+# input), leak, out-of-memory or broken API promise (fuzz/fuzz_support.h: status 500 or
+# undocumented, body not JSON, NaN or infinity, a negative length, a response or accepted request
+# outside openapi.yaml, a malformed G-code program). Findings are kept in build/fuzz/run/artifacts.
+#
+# Time: 7 harnesses x CUTCALC_FUZZ_SECONDS (default 30) = about 3.7 minutes of fuzzing, plus the
+# build (about 2 minutes from scratch on two idle cores; incremental afterwards).
+#
+# Environment:
+#   CUTCALC_FUZZ_SECONDS    seconds per harness (default 30)
+#   CUTCALC_FUZZ_RUNS       run each harness for this many inputs instead of a time (report runs)
+#   CUTCALC_FUZZERS         space-separated harness names to run (default: all of them)
+#   CUTCALC_REFERENCE_DIR   the reference cases (default ../shared/reference)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+seconds=${CUTCALC_FUZZ_SECONDS:-30}
+runs=${CUTCALC_FUZZ_RUNS:-}
+reference_dir=${CUTCALC_REFERENCE_DIR:-../shared/reference}
+build_dir=build/fuzz
+run_dir=$build_dir/run
+
+# --- dependencies (Debian 12): only the missing ones
+packages=(clang libclang-rt-14-dev cmake ninja-build pkg-config nlohmann-json3-dev libeigen3-dev
+  libspdlog-dev libyaml-cpp-dev)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+    missing+=("$package")
+done
+if ((${#missing[@]})); then
+  sudo_cmd=()
+  [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+  echo "ci-fuzz: installing ${missing[*]}"
+  "${sudo_cmd[@]}" apt-get update
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y --no-install-recommends \
+    "${missing[@]}"
+fi
+
+# --- build
+build_start=$SECONDS
+echo "=== fuzz: configure and build (clang++, -fsanitize=fuzzer,address,undefined)"
+cmake -S fuzz -B "$build_dir" -G Ninja -DCMAKE_CXX_COMPILER=clang++ >/dev/null
+cmake --build "$build_dir" -j 2
+build_seconds=$((SECONDS - build_start))
+
+# --- seeds and dictionary
+rm -rf "$run_dir/seeds" "$run_dir/artifacts" "$run_dir/logs"
+mkdir -p "$run_dir/seeds" "$run_dir/artifacts" "$run_dir/logs"
+"$build_dir/cutcalc_fuzz_seeds" "$reference_dir" "$run_dir/seeds"
+cat fuzz/cutcalc.dict "$run_dir/seeds/reference_keys.dict" >"$run_dir/cutcalc.dict"
+
+if [[ -n ${CUTCALC_FUZZERS:-} ]]; then
+  read -r -a fuzzers <<<"$CUTCALC_FUZZERS"
+else
+  mapfile -t fuzzers <"$build_dir/fuzzers.txt"
+fi
+if [[ -n $runs ]]; then
+  limit=(-runs="$runs")
+  echo "=== fuzz: ${#fuzzers[@]} harnesses, $runs inputs each"
+else
+  limit=(-max_total_time="$seconds")
+  echo "=== fuzz: ${#fuzzers[@]} harnesses, ${seconds} s each"
+fi
+
+fuzzer_pid=
+cleanup() {
+  if [[ -n $fuzzer_pid ]] && kill -0 "$fuzzer_pid" 2>/dev/null; then
+    kill "$fuzzer_pid" 2>/dev/null || true
+    wait "$fuzzer_pid" 2>/dev/null || true
+  fi
+}
+trap cleanup EXIT
+trap 'exit 130' INT TERM
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+
+fuzz_start=$SECONDS
+failed=()
+total_execs=0
+for fuzzer in "${fuzzers[@]}"; do
+  seeds=${fuzzer%_fuzzer}
+  seeds=${seeds%_text}
+  if [[ ! -x $build_dir/$fuzzer || ! -d $run_dir/seeds/$seeds ]]; then
+    echo "ci-fuzz: no harness $fuzzer or no seeds $seeds (reference files in $reference_dir?)" >&2
+    exit 1
+  fi
+  corpus=$build_dir/corpus/$fuzzer # kept between local runs; CI starts from the seeds
+  log=$run_dir/logs/$fuzzer.log
+  mkdir -p "$corpus"
+  started=$SECONDS
+  "$build_dir/$fuzzer" "$corpus" "$run_dir/seeds/$seeds" -dict="$run_dir/cutcalc.dict" \
+    "${limit[@]}" -timeout=5 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
+    -artifact_prefix="$run_dir/artifacts/$fuzzer-" >"$log" 2>&1 &
+  fuzzer_pid=$!
+  status=0
+  wait "$fuzzer_pid" || status=$?
+  fuzzer_pid=
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+  coverage=$(grep -Eo 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 || true)
+  total_execs=$((total_execs + ${execs:-0}))
+  printf '%-32s %10s execs %6s exec/s  %-22s %4d s  %s\n' "$fuzzer" "${execs:-?}" "${rate:-?}" \
+    "${coverage:-cov: ?}" $((SECONDS - started)) "$([[ $status -eq 0 ]] && echo ok || echo "FAILED ($status)")"
+  if [[ $status -ne 0 ]] || compgen -G "$run_dir/artifacts/$fuzzer-*" >/dev/null; then
+    failed+=("$fuzzer")
+    echo "--- $fuzzer: end of $log"
+    grep -v -E '^(#[0-9]+|INFO:|MS:|stat::)' "$log" | tail -60 || true
+    ls -l "$run_dir/artifacts/$fuzzer-"* 2>/dev/null || true
+  fi
+done
+
+echo "ci-fuzz: ${#fuzzers[@]} harnesses, $total_execs executions in $((SECONDS - fuzz_start)) s" \
+  "(build $build_seconds s), ${#failed[@]} failing${failed[*]:+: ${failed[*]}}"
+((${#failed[@]} == 0))
