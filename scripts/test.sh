@@ -15,6 +15,8 @@ for preset in release dev; do
 done
 echo "=== contract: lint openapi.yaml, replay every reference and bad-input case through Prism"
 scripts/ci-contract.sh
+echo "=== container: build the Dockerfile with podman, run it and replay the reference cases"
+scripts/ci-container.sh
 echo "=== Kubernetes manifests: render offline and validate"
 scripts/ci-k8s.sh
 echo "=== all tests passed"
