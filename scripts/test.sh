@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up, then builds and runs every test twice: an optimised release build, and a Debug build
 # with AddressSanitizer + UndefinedBehaviorSanitizer. Any warning fails the build (-Werror); any
-# test failure or sanitizer report fails the run.
+# test failure or sanitizer report fails the run. Then the fuzzers, the OpenAPI contract replay, the
+# container and the Kubernetes manifests (each script says what it proves).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -13,6 +14,8 @@ for preset in release dev; do
   echo "=== ${preset}: test"
   ctest --preset "$preset" -j 2
 done
+echo "=== fuzz: every libFuzzer harness (ASan + UBSan) for a bounded time, seeded from the reference cases"
+scripts/ci-fuzz.sh
 echo "=== contract: lint openapi.yaml, replay every reference and bad-input case through Prism"
 scripts/ci-contract.sh
 echo "=== container: build the Dockerfile with podman, run it and replay the reference cases"

@@ -42,7 +42,7 @@ MainTimeParams read_params(ObjectReader& in) {
   }
   params.feed_per_tooth_mm =
       in.required_number("feed_per_tooth_mm", Bounds::positive()).value_or(0);
-  const auto factor = in.optional_number("entry_feed_factor", Bounds::left_open(0.0, 1.0));
+  const auto factor = in.optional_number("entry_feed_factor", Bounds::positive(1.0));
   const auto entry_feed_per_tooth =
       in.optional_number("entry_feed_per_tooth_mm", Bounds::positive());
   if (entry_feed_per_tooth) {

@@ -1,0 +1,60 @@
+// Inputs the fuzzers (fuzz/, scripts/ci-fuzz.sh) found to break a promise of the API, minimised,
+// each run the way the harness runs it: api::run_json_endpoint with the handler the route table
+// registers. Every one must get a promised status (never 500) and a problem body that says which
+// field is wrong.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "api/json_endpoint.h"
+#include "api/routes.h"
+
+namespace cutcalc::testing {
+namespace {
+
+api::ApiResponse run(std::string_view path, std::string_view body) {
+  for (const api::CalculationRoute& route : api::calculation_routes()) {
+    if (path == route.path) {
+      return api::run_json_endpoint({path, "application/json", body, "fuzz", "application/json"},
+                                    route.handler);
+    }
+  }
+  ADD_FAILURE() << "no calculation route " << path;
+  return {};
+}
+
+// A 422 problem with an entry in errors at `pointer`.
+void expect_field_error(const api::ApiResponse& response, const std::string& pointer) {
+  ASSERT_EQ(response.status, 422) << response.body;
+  EXPECT_EQ(response.content_type, "application/problem+json");
+  const auto body = nlohmann::json::parse(response.body, nullptr, false);
+  ASSERT_TRUE(body.is_object()) << response.body;
+  ASSERT_TRUE(body.contains("errors") && body["errors"].is_array()) << response.body;
+  bool found = false;
+  for (const auto& error : body["errors"]) {
+    found = found || error.value("pointer", std::string("-")) == pointer;
+  }
+  EXPECT_TRUE(found) << "no error at \"" << pointer << "\": " << response.body;
+}
+
+// main_time_fuzzer: entry_feed_factor 5e-324 (a subnormal double, so inside 0 < f <= 1) makes the
+// entry feed f * S_m2 so small that the entry time overflows to infinity; the domain reported
+// "the result is too large to represent" (not_converged) and the answer was a 500. A positive
+// factor too small for any machine must be refused like every other tiny positive input
+// (kSmallestPositive, api/field_reader.h): 422 at /entry_feed_factor.
+TEST(FuzzRegression, MainTimeSubnormalEntryFeedFactorIsAFieldError) {
+  const auto response = run("/v1/main-time", R"({
+    "cutter_diameter_mm": 20, "teeth": 4, "spindle_speed_rpm": 1000, "feed_per_tooth_mm": 0.05,
+    "entry_feed_factor": 5e-324, "length_mm": 100,
+    "entry": {"contour": "straight", "width_mm": 20},
+    "exit": {"contour": "straight", "width_mm": 20},
+    "allowance": {"width_mm": 20, "width_of_cut_mm": 20, "depth_mm": 2, "depth_of_cut_mm": 2}})");
+  expect_field_error(response, "/entry_feed_factor");
+}
+
+}  // namespace
+}  // namespace cutcalc::testing
