@@ -11,6 +11,7 @@ COPY cmake cmake
 COPY domain domain
 COPY api api
 COPY service service
+COPY web web
 ARG CUTCALC_GIT_COMMIT=unknown
 RUN cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCUTCALC_BUILD_TESTS=OFF \
       -DCUTCALC_GIT_COMMIT="${CUTCALC_GIT_COMMIT}" \

@@ -164,6 +164,18 @@ std::optional<std::vector<double>> ObjectReader::optional_number_list(std::strin
   return all_valid ? std::optional(std::move(numbers)) : std::nullopt;
 }
 
+bool ObjectReader::boolean_or(std::string_view key, bool fallback) {
+  const nlohmann::json* value = find(key);
+  if (value == nullptr) {
+    return fallback;
+  }
+  if (!value->is_boolean()) {
+    add_error(key, "must be true or false");
+    return fallback;
+  }
+  return value->get<bool>();
+}
+
 namespace {
 
 std::string list_of(std::initializer_list<std::string_view> allowed) {

@@ -70,6 +70,10 @@ class ObjectReader {
                                                           std::size_t min_items,
                                                           std::size_t max_items);
 
+  // Absent: `fallback`, no error. Present: must be true or false (JSON boolean, no 0/1 or
+  // "true"); otherwise an error and `fallback`.
+  bool boolean_or(std::string_view key, bool fallback);
+
   // Absent: nullopt, no error. Present: a string that must be one of `allowed`.
   std::optional<std::string> optional_choice(std::string_view key,
                                              std::initializer_list<std::string_view> allowed);

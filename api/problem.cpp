@@ -37,11 +37,8 @@ ProblemType describe(ProblemKind kind) {
   return {500, "urn:cutcalc:problem:internal-error", "Internal error"};
 }
 
-// "/entry/width_mm" -> "entry.width_mm"; the empty pointer names the request as a whole.
+// "/entry/width_mm" -> "entry.width_mm".
 std::string field_name(const std::string& pointer) {
-  if (pointer.empty()) {
-    return "the request";
-  }
   std::string name = pointer.substr(1);
   for (char& c : name) {
     if (c == '/') {
@@ -61,7 +58,9 @@ Problem invalid_input(std::vector<FieldError> errors) {
     problem.detail = "the request is invalid";
   } else {
     const FieldError& first = problem.errors.front();
-    problem.detail = field_name(first.pointer) + " " + first.detail;
+    // An error of the request as a whole ("give exactly one of ...") reads as it stands.
+    problem.detail =
+        first.pointer.empty() ? first.detail : field_name(first.pointer) + " " + first.detail;
     if (problem.errors.size() > 1) {
       problem.detail += " (and " + std::to_string(problem.errors.size() - 1) + " more)";
     }

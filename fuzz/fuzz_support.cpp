@@ -14,6 +14,7 @@
 #include "api/json_endpoint.h"
 #include "api/problem.h"
 #include "api/routes.h"
+#include "support/quantity_keys.h"
 
 #ifdef CUTCALC_FUZZ_OPENAPI_PATH
 #include "support/openapi_contract.h"
@@ -445,13 +446,7 @@ bool mutate_document(nlohmann::json& document, Rng& rng) {
 }  // namespace
 
 bool is_non_negative_key(std::string_view key) {
-  if (key == "x_mm" || key == "y_mm" || key == "offset_mm" || key == "axis_y_mm") {
-    return false;
-  }
-  if (ends_with(key, "_mm") || ends_with(key, "_mm2") || ends_with(key, "_um")) {
-    return true;
-  }
-  return ends_with(key, "_min") && !ends_with(key, "_per_min");
+  return test_support::is_non_negative_quantity(key);
 }
 
 std::optional<std::string> negative_length(const nlohmann::json& body) {

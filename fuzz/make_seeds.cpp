@@ -11,6 +11,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -19,6 +20,28 @@
 namespace {
 
 namespace fs = std::filesystem;
+
+// The request with the opt-in plot field of its endpoint set, when the endpoint has one and the
+// request does not already choose its points.
+std::optional<nlohmann::json> plot_request(const std::string& endpoint,
+                                           const nlohmann::json& request) {
+  if (!request.is_object()) {
+    return std::nullopt;
+  }
+  nlohmann::json plot = request;
+  if (endpoint == "/v1/entry-length") {
+    plot["include_scheme"] = true;
+  } else if (endpoint == "/v1/resultant-speeds" && !request.contains("contact_angles_deg")) {
+    plot["arc_samples"] = 91;
+  } else if (endpoint == "/v1/roughness/groove-wall") {
+    plot["curve_points"] = 121;
+  } else if (endpoint == "/v1/polygon-hole/gcode") {
+    plot["include_geometry"] = true;
+  } else {
+    return std::nullopt;
+  }
+  return plot;
+}
 
 std::string slug_of(std::string endpoint) {
   if (endpoint.rfind("/v1/", 0) == 0) {
@@ -99,10 +122,16 @@ int main(int argc, char** argv) {
       std::size_t index = 0;
       for (const auto& reference_case : reference.at("cases")) {
         const nlohmann::json& request = reference_case.at("request");
-        std::ofstream(corpus / file_name_of(reference_case.value("id", ""), index++))
-            << request.dump();
+        const std::string name = file_name_of(reference_case.value("id", ""), index++);
+        std::ofstream(corpus / name) << request.dump();
         collect_tokens(request, tokens);
         ++seeds;
+        // The same request asking for the web calculator's plot data, so that the fuzzers start
+        // inside those code paths too.
+        if (const auto plot = plot_request(reference.at("endpoint").get<std::string>(), request)) {
+          std::ofstream(corpus / ("plot-" + name)) << plot->dump();
+          ++seeds;
+        }
       }
       ++files;
     }

@@ -22,4 +22,6 @@ echo "=== container: build the Dockerfile with podman, run it and replay the ref
 scripts/ci-container.sh
 echo "=== Kubernetes manifests: render offline and validate"
 scripts/ci-k8s.sh
+echo "=== e2e: the web calculator in headless Chromium (Playwright) against a live release cutcalc"
+scripts/ci-e2e.sh
 echo "=== all tests passed"

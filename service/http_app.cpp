@@ -15,6 +15,7 @@
 #include "service/http_tuning.h"
 #include "service/logging.h"
 #include "service/request_id.h"
+#include "service/web_assets.h"
 
 namespace cutcalc::service {
 namespace {
@@ -230,6 +231,9 @@ void HttpApp::install_routes() {
     const std::string_view yaml = embedded_openapi_yaml();
     res.set_content(yaml.data(), yaml.size(), "application/yaml");
   });
+
+  // The calculator page at / and its assets under /ui/ (service/web_assets.h).
+  install_web_routes(*server_, routes_);
 }
 
 }  // namespace cutcalc::service

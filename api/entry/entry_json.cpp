@@ -20,6 +20,60 @@ nlohmann::json to_json(const domain::entry::EntryLengthResult& result) {
 
 namespace {
 
+const char* position_name(domain::entry::SchemePositionKind kind) {
+  using domain::entry::SchemePositionKind;
+  switch (kind) {
+    case SchemePositionKind::start:
+      return "start";
+    case SchemePositionKind::first_contact:
+      return "first_contact";
+    case SchemePositionKind::saturation:
+      return "saturation";
+    case SchemePositionKind::end:
+      return "end";
+  }
+  return "start";
+}
+
+nlohmann::json to_json(const std::vector<domain::entry::Position>& points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& point : points) {
+    out.push_back(entry::to_json(point));
+  }
+  return out;
+}
+
+nlohmann::json to_json(const domain::entry::LateralRange& range) {
+  return {{"y_min_mm", range.y_min_mm}, {"y_max_mm", range.y_max_mm}};
+}
+
+nlohmann::json to_json(const domain::entry::SchemeSide& side) {
+  nlohmann::json positions = nlohmann::json::array();
+  for (const auto& position : side.positions) {
+    positions.push_back({{"name", position_name(position.kind)},
+                         {"x_mm", position.axis.x_mm},
+                         {"y_mm", position.axis.y_mm}});
+  }
+  return {{"contour", to_json(side.contour)},
+          {"workpiece_outline", to_json(side.workpiece_outline)},
+          {"strip", to_json(side.strip)},
+          {"band", to_json(side.band)},
+          {"positions", std::move(positions)}};
+}
+
+}  // namespace
+
+nlohmann::json to_json(const domain::entry::EntryScheme& scheme) {
+  nlohmann::json out = {{"cutter_radius_mm", scheme.cutter_radius_mm},
+                        {"entry", to_json(scheme.entry)}};
+  if (scheme.exit) {
+    out["exit"] = to_json(*scheme.exit);
+  }
+  return out;
+}
+
+namespace {
+
 nlohmann::json to_json(const domain::entry::LateralPass& pass) {
   return {{"width_mm", pass.width_mm},
           {"axis_y_mm", pass.axis_y_mm},

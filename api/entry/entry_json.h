@@ -4,12 +4,15 @@
 #include <nlohmann/json.hpp>
 
 #include "domain/entry/entry_length.h"
+#include "domain/entry/entry_scheme.h"
 #include "domain/entry/main_time.h"
 
 namespace cutcalc::api::entry {
 
 nlohmann::json to_json(const domain::entry::Position& position);
 nlohmann::json to_json(const domain::entry::EntryLengthResult& result);
+// The opt-in `scheme` of POST /v1/entry-length (include_scheme).
+nlohmann::json to_json(const domain::entry::EntryScheme& scheme);
 nlohmann::json to_json(const domain::entry::MainTimeResult& result);
 
 }  // namespace cutcalc::api::entry

@@ -5,13 +5,20 @@
 #include "api/entry/entry_json.h"
 #include "api/field_reader.h"
 #include "domain/entry/entry_length.h"
+#include "domain/entry/entry_scheme.h"
 
 namespace cutcalc::api::entry {
 namespace {
 
-// The request's fields; meaningful only when the reader recorded no error.
-domain::entry::EntryLengthParams read_params(ObjectReader& in) {
+struct EntryLengthRequest {
   domain::entry::EntryLengthParams params;
+  bool include_scheme = false;  // answer the plan-view scheme too
+};
+
+// The request's fields; meaningful only when the reader recorded no error.
+EntryLengthRequest read_request(ObjectReader& in) {
+  EntryLengthRequest request;
+  domain::entry::EntryLengthParams& params = request.params;
   params.cutter_diameter_mm =
       in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
   params.offset_mm = in.number_or("offset_mm", Bounds::magnitude(), 0.0);
@@ -36,8 +43,9 @@ domain::entry::EntryLengthParams read_params(ObjectReader& in) {
       }
     }
   }
+  request.include_scheme = in.boolean_or("include_scheme", false);
   in.reject_unknown_fields();
-  return params;
+  return request;
 }
 
 }  // namespace
@@ -45,15 +53,23 @@ domain::entry::EntryLengthParams read_params(ObjectReader& in) {
 HandlerOutcome handle_entry_length(const nlohmann::json& body) {
   std::vector<FieldError> errors;
   ObjectReader in = root_reader(body, errors);
-  const auto params = read_params(in);
+  const EntryLengthRequest request = read_request(in);
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
   }
-  const auto result = domain::entry::compute_entry_length(params);
+  const auto result = domain::entry::compute_entry_length(request.params);
   if (!result.ok()) {
     return to_problem(result.error());
   }
-  return to_json(result.value());
+  nlohmann::json answer = to_json(result.value());
+  if (request.include_scheme) {
+    const auto scheme = domain::entry::entry_scheme(request.params, result.value());
+    if (!scheme.ok()) {
+      return to_problem(scheme.error());
+    }
+    answer["scheme"] = to_json(scheme.value());
+  }
+  return answer;
 }
 
 }  // namespace cutcalc::api::entry

@@ -1,5 +1,7 @@
 #include "api/kinematics/resultant_speeds_endpoint.h"
 
+#include <cstdint>
+
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
 #include "api/milling_sense_json.h"
@@ -11,6 +13,9 @@ namespace {
 namespace model = domain::kinematics;
 
 constexpr std::size_t kMaxContactAngles = 1000;
+// arc_samples: both ends of the arc at least; 361 = one sample per degree of a half-circle arc.
+constexpr std::int64_t kMinArcSamples = 2;
+constexpr std::int64_t kMaxArcSamples = 361;
 
 // The request's fields; meaningful only when the reader recorded no error.
 model::ResultantSpeedsParams read_params(ObjectReader& in) {
@@ -32,6 +37,10 @@ model::ResultantSpeedsParams read_params(ObjectReader& in) {
   params.tool_feed_mm_per_min = in.number_or("tool_feed_mm_per_min", Bounds::magnitude(), 0.0);
   params.contact_angles_deg =
       in.optional_number_list("contact_angles_deg", Bounds{}, 1, kMaxContactAngles);
+  if (in.has("arc_samples")) {
+    params.arc_samples = static_cast<int>(
+        in.required_integer("arc_samples", kMinArcSamples, kMaxArcSamples).value_or(0));
+  }
   params.edge_inclination_deg =
       in.number_or("edge_inclination_deg", Bounds::open(-90.0, 90.0), 0.0);
   in.reject_unknown_fields();
@@ -61,6 +70,9 @@ HandlerOutcome handle_resultant_speeds(const nlohmann::json& body) {
   const auto params = read_params(in);
   if (errors.empty() && in.has("center_distance_mm") == in.has("flat_depth_mm")) {
     errors.push_back({"", "give exactly one of center_distance_mm and flat_depth_mm"});
+  }
+  if (errors.empty() && in.has("contact_angles_deg") && in.has("arc_samples")) {
+    errors.push_back({"", "give at most one of contact_angles_deg and arc_samples"});
   }
   if (!errors.empty()) {
     return invalid_input(std::move(errors));

@@ -1,7 +1,11 @@
 #include "api/polygon/polygon_hole_endpoint.h"
 
+#include <utility>
+#include <vector>
+
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "domain/polygon/hole_geometry.h"
 #include "domain/polygon/polygon_hole.h"
 
 namespace cutcalc::api::polygon {
@@ -14,6 +18,12 @@ namespace model = domain::polygon;
 const Bounds kDiameter{1.0, true, kMaxLengthMm, true, {}};
 const Bounds kTolerance{0.0001, true, 0.1, true, {}};
 constexpr std::int64_t kMaxLoopsPerLayer = 100;
+
+// The request: the program's parameters and whether the JSON answer carries the drawing.
+struct PolygonHoleRequest {
+  model::PolygonHoleParams params;
+  bool include_geometry = false;
+};
 
 model::PolygonHoleParams read_params(ObjectReader& in) {
   model::PolygonHoleParams params;
@@ -34,8 +44,15 @@ model::PolygonHoleParams read_params(ObjectReader& in) {
   }
   params.safe_z_mm = in.number_or("safe_z_mm", Bounds::positive(), 5.0);
   params.block_time_ms = in.number_or("block_time_ms", Bounds::positive(), 2.0);
-  in.reject_unknown_fields();
   return params;
+}
+
+PolygonHoleRequest read_request(ObjectReader& in) {
+  PolygonHoleRequest request;
+  request.params = read_params(in);
+  request.include_geometry = in.boolean_or("include_geometry", false);
+  in.reject_unknown_fields();
+  return request;
 }
 
 nlohmann::json to_json(const model::PolygonHoleResult& result) {
@@ -56,20 +73,58 @@ nlohmann::json to_json(const model::PolygonHoleResult& result) {
           {"warnings", std::move(warnings)}};
 }
 
+nlohmann::json to_json(const model::PlanePoint& point) {
+  return {{"x_mm", point.x_mm}, {"y_mm", point.y_mm}};
+}
+
+nlohmann::json to_json(const std::vector<model::PlanePoint>& points) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& point : points) {
+    list.push_back(to_json(point));
+  }
+  return list;
+}
+
+nlohmann::json to_json(const model::HoleGeometry& geometry) {
+  nlohmann::json poses = nlohmann::json::array();
+  for (const auto& pose : geometry.rotor_positions) {
+    poses.push_back({{"phase_deg", pose.phase_deg},
+                     {"axis", to_json(pose.axis)},
+                     {"outline", to_json(pose.outline)}});
+  }
+  return {{"polygon", to_json(geometry.polygon)},
+          {"centre_path", to_json(geometry.centre_path)},
+          {"predicted_hole", to_json(geometry.predicted_hole)},
+          {"rotor_positions", std::move(poses)},
+          {"corner",
+           {{"vertex", to_json(geometry.corner_vertex)},
+            {"view_radius_mm", geometry.corner_view_radius_mm}}}};
+}
+
 }  // namespace
 
 HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
   std::vector<FieldError> errors;
   ObjectReader in = root_reader(body, errors);
-  const auto params = read_params(in);
+  const auto request = read_request(in);
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
   }
-  const auto result = model::generate_polygon_hole(params);
+  const auto result = model::generate_polygon_hole(request.params);
   if (!result.ok()) {
     return to_problem(result.error());
   }
-  return JsonWithText{to_json(result.value()), model::program_with_warning_comments(result.value()),
+  nlohmann::json json = to_json(result.value());
+  if (request.include_geometry) {
+    // Only the JSON answer: the plain-text program is the same with or without it.
+    const auto geometry =
+        model::sample_hole_geometry({request.params.faces, request.params.inscribed_diameter_mm});
+    if (!geometry.ok()) {
+      return to_problem(geometry.error());
+    }
+    json["geometry"] = to_json(geometry.value());
+  }
+  return JsonWithText{std::move(json), model::program_with_warning_comments(result.value()),
                       result.value().file_name};
 }
 

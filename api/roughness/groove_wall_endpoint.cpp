@@ -1,8 +1,12 @@
 #include "api/roughness/groove_wall_endpoint.h"
 
+#include <cstdint>
+#include <optional>
+
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
 #include "domain/roughness/groove_wall.h"
+#include "domain/roughness/groove_wall_curve.h"
 
 namespace cutcalc::api::roughness {
 namespace {
@@ -11,6 +15,9 @@ namespace model = domain::roughness;
 
 // Rz targets up to 1 km in micrometres: no meaningful surface is rougher.
 constexpr double kMaxTargetUm = 1.0e9;
+// curve_points: a line needs two points; 1000 is finer than any plot.
+constexpr std::int64_t kMinCurvePoints = 2;
+constexpr std::int64_t kMaxCurvePoints = 1000;
 
 const char* to_string(model::CrestBranch branch) {
   switch (branch) {
@@ -24,6 +31,15 @@ const char* to_string(model::CrestBranch branch) {
   return "minor_edge_and_main_edge";
 }
 
+nlohmann::json to_json(const model::GrooveWallCurve& curve) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& point : curve.points) {
+    points.push_back(
+        {{"feed_mm", point.feed_mm}, {"rz_um", point.rz_um}, {"branch", to_string(point.branch)}});
+  }
+  return points;
+}
+
 }  // namespace
 
 HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
@@ -35,6 +51,11 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
   params.minor_edge_angle_deg =
       in.required_number("minor_edge_angle_deg", Bounds{0.0, true, 90.0, false, {}}).value_or(0.0);
   params.target_rz_um = in.optional_number("target_rz_um", Bounds::positive(kMaxTargetUm));
+  std::optional<int> curve_points;
+  if (in.has("curve_points")) {
+    curve_points = static_cast<int>(
+        in.required_integer("curve_points", kMinCurvePoints, kMaxCurvePoints).value_or(0));
+  }
   in.reject_unknown_fields();
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
@@ -47,6 +68,13 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
                         {"branch", to_string(result.value().branch)}};
   if (result.value().max_feed_mm) {
     out["max_feed_mm"] = *result.value().max_feed_mm;
+  }
+  if (curve_points) {
+    const auto curve = model::compute_groove_wall_curve({params, *curve_points});
+    if (!curve.ok()) {
+      return to_problem(curve.error());
+    }
+    out["curve"] = to_json(curve.value());
   }
   return out;
 }

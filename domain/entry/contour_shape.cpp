@@ -73,4 +73,12 @@ double exit_edge_x_mm(const Contour& contour, double y_mm) {
   return 0.0;
 }
 
+// Section 3
+double frame_y_mm(const Contour& contour, double y_mm) {
+  if (contour.kind == ContourKind::straight || contour.kind == ContourKind::wall) {
+    return half_width_mm(contour) + y_mm;
+  }
+  return y_mm;
+}
+
 }  // namespace cutcalc::domain::entry::detail

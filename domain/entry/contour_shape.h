@@ -25,4 +25,8 @@ double entry_edge_x_mm(const Contour& contour, double y_mm);
 // f(y) (section 3): the exit region is x <= f(y) for |y| <= h. A wall has no such function (E22).
 double exit_edge_x_mm(const Contour& contour, double y_mm);
 
+// Section 3: the workpiece frame's Y of the internal lateral y. Straight edges and walls measure Y
+// from the side edge (Y = y + h), arcs from the arc axis (Y = y).
+double frame_y_mm(const Contour& contour, double y_mm);
+
 }  // namespace cutcalc::domain::entry::detail

@@ -10,14 +10,9 @@ namespace cutcalc::domain::entry::detail {
 
 namespace {
 
-// Section 3: straight edges and walls measure Y from the side edge (Y = y + h), arcs from the
-// arc axis (Y = y).
-double frame_y_mm(const PassSide& side) {
-  const ContourKind kind = side.contour.kind;
-  if (kind == ContourKind::straight || kind == ContourKind::wall) {
-    return half_width_mm(side.contour) + side.lateral.axis_y_mm;
-  }
-  return side.lateral.axis_y_mm;
+// Section 3: Y_n, Y_k are the frame Y of the axis y = K.
+double axis_frame_y_mm(const PassSide& side) {
+  return frame_y_mm(side.contour, side.lateral.axis_y_mm);
 }
 
 DomainError no_contact(const char* where) {
@@ -48,10 +43,10 @@ Result<PassGeometry> solve_pass(const PassPlan& plan) {
 
   PassGeometry geometry;
   EntryLengthResult& result = geometry.result;
-  result.engagement_length_mm = x_cs - x_c0;                                 // L_vr1 (E6)
-  result.entry_length_mm = plan.approach_mm + result.engagement_length_mm;   // L_vr (E6)
-  result.start = Position{plan.approach_mm - x_c0, frame_y_mm(plan.entry)};  // X_n, Y_n (E7)
-  result.steady_width_mm = entry_band->width_mm;                             // W (E2)
+  result.engagement_length_mm = x_cs - x_c0;                                      // L_vr1 (E6)
+  result.entry_length_mm = plan.approach_mm + result.engagement_length_mm;        // L_vr (E6)
+  result.start = Position{plan.approach_mm - x_c0, axis_frame_y_mm(plan.entry)};  // X_n, Y_n (E7)
+  result.steady_width_mm = entry_band->width_mm;                                  // W (E2)
   if (!plan.exit) {
     return geometry;
   }
@@ -71,7 +66,7 @@ Result<PassGeometry> solve_pass(const PassPlan& plan) {
                       "length_mm is too short: the stroke ends before the cutter is fully engaged");
   }
   ExitResult exit_result;
-  exit_result.end = Position{X_k, frame_y_mm(exit.side)};  // X_k, Y_k (E8)
+  exit_result.end = Position{X_k, axis_frame_y_mm(exit.side)};  // X_k, Y_k (E8)
   exit_result.working_stroke_mm =
       exit.length_mm + exit.extra_path_mm + result.start.x_mm - X_k + overrun;  // L_rx (E9)
   result.exit = exit_result;

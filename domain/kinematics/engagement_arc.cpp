@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "domain/kinematics/degrees.h"
 
@@ -64,6 +65,27 @@ std::optional<EngagementArc> engagement_arc(
 
 bool inside_arc(double contact_angle_deg, double half_angle_deg) {
   return std::abs(contact_angle_deg) <= half_angle_deg + kArcSlackDeg;
+}
+
+// Section 3: the entry +rho_e first, the exit -rho_e last. The integer numerator n - 1 - 2 i is
+// exact and the quotient correctly rounded, so |fraction| <= 1 (no sample leaves the arc), the
+// ends are +-1 exactly and sample i is the negative of sample n - 1 - i.
+std::vector<double> evenly_spaced_contact_angles(double half_angle_deg, int count) {
+  std::vector<double> angles;
+  if (count <= 0) {
+    return angles;
+  }
+  if (count == 1) {
+    angles.push_back(0.0);
+    return angles;
+  }
+  const double intervals = count - 1.0;  // n - 1
+  angles.reserve(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    const double fraction = (intervals - 2.0 * i) / intervals;  // (n - 1 - 2 i) / (n - 1)
+    angles.push_back(half_angle_deg * fraction + 0.0);          // + 0.0: no -0 in the middle
+  }
+  return angles;
 }
 
 }  // namespace cutcalc::domain::kinematics::detail

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <variant>
+#include <vector>
 
 #include "domain/kinematics/resultant_speeds.h"
 
@@ -22,5 +23,11 @@ std::optional<EngagementArc> engagement_arc(
 
 // Section 4 notes: |rho| <= rho_e + 1e-9 deg; the angle itself is not clamped.
 bool inside_arc(double contact_angle_deg, double half_angle_deg);
+
+// `count` contact angles evenly spaced over the whole arc in the order an edge point passes them
+// (section 3): rho_i = rho_e (n - 1 - 2 i) / (n - 1), i = 0..n-1, from the entry +rho_e to the
+// exit -rho_e, both ends exactly the rho_e given, the list antisymmetric and 0 in the middle for
+// odd n. count = 1 gives the middle alone; count <= 0 nothing.
+std::vector<double> evenly_spaced_contact_angles(double half_angle_deg, int count);
 
 }  // namespace cutcalc::domain::kinematics::detail

@@ -19,11 +19,17 @@ Result<ResultantSpeedsResult> compute_resultant_speeds(const ResultantSpeedsPara
                       "the tool circle does not cut the workpiece circle: no engagement arc");
   }
   const double rho_e = arc->half_angle_deg;  // rho_e (V3b)
-  // Section 3: entry, middle, exit, with the very rho_e reported, so the ends lie on the arc.
-  const std::vector<double> default_angles =
-      params.contact_angles_deg ? std::vector<double>{} : std::vector<double>{rho_e, 0.0, -rho_e};
-  const std::vector<double>& angles =
-      params.contact_angles_deg ? *params.contact_angles_deg : default_angles;
+  // Section 3: entry, middle, exit (or arc_samples angles from entry to exit), with the very
+  // rho_e reported, so the ends lie on the arc.
+  std::vector<double> generated_angles;
+  if (params.arc_samples) {
+    generated_angles = detail::evenly_spaced_contact_angles(rho_e, *params.arc_samples);
+  } else if (!params.contact_angles_deg) {
+    generated_angles = {rho_e, 0.0, -rho_e};
+  }
+  const std::vector<double>& angles = params.contact_angles_deg && !params.arc_samples
+                                          ? *params.contact_angles_deg
+                                          : generated_angles;
 
   for (std::size_t i = 0; i < angles.size(); ++i) {
     if (!detail::inside_arc(angles[i], rho_e)) {

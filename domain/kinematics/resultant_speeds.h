@@ -30,7 +30,11 @@ struct ResultantSpeedsParams {
   MillingSense milling = MillingSense::up;  // the sense at the middle of the arc, rho = 0
   double tool_feed_mm_per_min = 0.0;        // v_s1, signed, + away from the workpiece axis
   std::optional<std::vector<double>> contact_angles_deg;  // rho_i; default +rho_e, 0, -rho_e
-  double edge_inclination_deg = 0.0;                      // lambda, -90 < lambda < 90
+  // n >= 2 contact angles evenly spaced over the whole arc, +rho_e (entry) to -rho_e (exit)
+  // inclusive. Exclusive with contact_angles_deg: the caller gives at most one of the two (were
+  // both set, arc_samples would be used).
+  std::optional<int> arc_samples;
+  double edge_inclination_deg = 0.0;  // lambda, -90 < lambda < 90
 };
 
 struct ContactPointSpeeds {
@@ -53,8 +57,10 @@ struct ResultantSpeedsResult {
   std::vector<ContactPointSpeeds> points;  // in the order of the requested angles
 };
 
-// V1-V14. Errors: no_contact (no engagement arc, V3 / section 5), contact_angle_outside_arc
-// (index = the angle's position in contact_angles_deg).
+// V1-V14 at the requested contact angles: contact_angles_deg as given, or arc_samples angles
+// evenly spaced over the engagement arc (section 3: entry +rho_e first, exit -rho_e last), or the
+// default entry, middle, exit. Errors: no_contact (no engagement arc, V3 / section 5),
+// contact_angle_outside_arc (index = the angle's position in contact_angles_deg).
 Result<ResultantSpeedsResult> compute_resultant_speeds(const ResultantSpeedsParams& params);
 
 }  // namespace cutcalc::domain::kinematics

@@ -66,21 +66,42 @@ Eigen::Vector2d Rotor::last_arc_end(int v) const {
 // P13. x = b - theta_0 reduced to one period 2 pi / M = N delta of the M-fold symmetric rotor:
 // [0, delta) is the upper half of corner 0's normal cone, [m delta, (m+1) delta) arc (0, m),
 // [(N-1) delta, N delta) the lower half of corner 1's cone. n(theta_0 + x) = (sin x, -cos x).
-double Rotor::support(double b) const {
+Rotor::Piece Rotor::piece_of(double b) const {
   const double period = 2.0 * std::numbers::pi / M_;
   double x = std::fmod(b + 0.5 * std::numbers::pi, period);
   if (x < 0.0) {
     x += period;
   }
   const int piece = std::clamp(static_cast<int>(x / delta_), 0, N_ - 1);
-  if (piece == 0) {
+  return Piece{piece, x, b + 0.5 * std::numbers::pi - x};
+}
+
+double Rotor::support(double b) const {
+  const double period = 2.0 * std::numbers::pi / M_;
+  const Piece piece = piece_of(b);
+  const double x = piece.x;
+  if (piece.index == 0) {
     return r_ * std::cos(x);
   }
-  if (piece == N_ - 1) {
+  if (piece.index == N_ - 1) {
     return r_ * std::cos(period - x);
   }
-  const Eigen::Vector2d& O = centre0_[piece];
-  return O.x() * std::sin(x) - O.y() * std::cos(x) + R_[piece];
+  const Eigen::Vector2d& O = centre0_[piece.index];
+  return O.x() * std::sin(x) - O.y() * std::cos(x) + R_[piece.index];
+}
+
+// P13: the same pieces as support(), as points; the reduced pose turned back by `turn`.
+Eigen::Vector2d Rotor::support_point(double b) const {
+  const Piece piece = piece_of(b);
+  Eigen::Vector2d point;
+  if (piece.index == 0) {
+    point = corner(0);
+  } else if (piece.index == N_ - 1) {
+    point = corner(1);
+  } else {
+    point = centre0_[piece.index] + R_[piece.index] * unit(corner_angle(0) + piece.x);
+  }
+  return rotate(point, piece.turn);
 }
 
 }  // namespace cutcalc::domain::polygon::detail

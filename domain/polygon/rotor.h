@@ -37,8 +37,21 @@ class Rotor {
 
   // P13: h(b), the support function in the rotor frame (b: outward normal angle, any real).
   [[nodiscard]] double support(double b) const;
+  // P13: the boundary point where h(b) is attained, <point, n(b)> = h(b): a corner when b is in
+  // its normal cone, else the point of the flank arc with outward normal b.
+  [[nodiscard]] Eigen::Vector2d support_point(double b) const;
 
  private:
+  // b reduced to one period 2 pi / M of the M-fold symmetric rotor: b = theta_0 + turn + x with
+  // turn a multiple of the period and x in [0, period); piece 0 = corner 0's cone (upper half),
+  // m = 1..N-2 arc (0, m), N-1 = corner 1's cone (lower half).
+  struct Piece {
+    int index = 0;
+    double x = 0.0;
+    double turn = 0.0;
+  };
+  [[nodiscard]] Piece piece_of(double b) const;
+
   int N_;
   int M_;
   double r_;

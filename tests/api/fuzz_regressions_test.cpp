@@ -56,5 +56,18 @@ TEST(FuzzRegression, MainTimeSubnormalEntryFeedFactorIsAFieldError) {
   expect_field_error(response, "/entry_feed_factor");
 }
 
+// entry_length_fuzzer: the oracle took the scheme's lateral limits for lengths and called the
+// negative band limit -3 mm a broken promise. It is a coordinate: the frame Y of an arc is measured
+// from the arc axis (spec section 3), so with K = 12 and r = 15 the band [K - r, K + r] clipped to
+// the strip [-5, 5] is [-3, 5]. Pinned here; both oracles now share support/quantity_keys.h.
+TEST(FuzzRegression, EntrySchemeBandOfAnArcIsSignedFrameY) {
+  const auto response = run("/v1/entry-length", R"({"approach_mm": 2.0, "cutter_diameter_mm": 30,
+    "entry": {"contour": "convex_arc", "radius_mm": 5}, "include_scheme": true, "offset_mm": 12})");
+  ASSERT_EQ(response.status, 200) << response.body;
+  const auto band = nlohmann::json::parse(response.body).at("scheme").at("entry").at("band");
+  EXPECT_NEAR(band.at("y_min_mm").get<double>(), -3.0, 1e-12);
+  EXPECT_NEAR(band.at("y_max_mm").get<double>(), 5.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace cutcalc::testing

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "support/openapi_contract.h"
+#include "support/quantity_keys.h"
 
 namespace cutcalc::testing {
 namespace {
@@ -12,20 +13,10 @@ const test_support::OpenApiContract& contract() {
   return loaded;
 }
 
-bool ends_with(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-// Lengths (_mm, _um) and times (_min) are never negative; coordinates and offsets are signed.
 void expect_no_negative_lengths(const nlohmann::json& value, const std::string& key,
                                 const std::string& request) {
   if (value.is_number()) {
-    const bool signed_field =
-        key == "x_mm" || key == "y_mm" || key == "offset_mm" || key == "axis_y_mm";
-    const bool length_or_time =
-        ends_with(key, "_mm") || ends_with(key, "_um") || ends_with(key, "_min");
-    if (length_or_time && !signed_field) {
+    if (test_support::is_non_negative_quantity(key)) {
       EXPECT_GE(value.get<double>(), 0.0) << key << " for " << request;
     }
   } else if (value.is_object()) {

@@ -1,0 +1,239 @@
+// Polygon-hole G-code (paper 004): the program, its figures, the predicted hole and its corner,
+// and the program as a .ngc download (the same request with Accept: text/plain).
+
+import { fileNameOf, postJson, postWithOptIn } from './api.js';
+import {
+  fmt,
+  h,
+  noDiagram,
+  onCalculate,
+  readBody,
+  showFailure,
+  showMessage,
+  sym,
+  value,
+  valueList,
+} from './form.js';
+import { Bounds, diagram, figure, mapped, points, s, unitsPerPixel } from './svg.js';
+
+const PATH = '/v1/polygon-hole/gcode';
+
+export function init() {
+  const form = document.getElementById('polygon-form');
+  const result = document.getElementById('polygon-result');
+  const download = document.getElementById('polygon-download');
+  // The program's <pre> is part of the page from the start (hidden until there is a program).
+  const program = document.getElementById('polygon-program');
+  let calculated = null; // the body of the last successful calculation
+
+  onCalculate(form, async () => {
+    const body = readBody(form);
+    const answer = await postWithOptIn(PATH, body, 'include_geometry', true);
+    result.replaceChildren();
+    if (!answer.ok) {
+      calculated = null;
+      download.disabled = true;
+      showFailure(form, answer);
+      program.textContent = '';
+      program.hidden = true;
+      result.append(
+        h('p', { class: 'placeholder' }, 'No results: see the messages in the form.'),
+        program,
+      );
+      return;
+    }
+    calculated = body;
+    download.disabled = false;
+    program.textContent = answer.json.program;
+    program.hidden = false;
+    result.append(...programResults(answer, result), h('h3', {}, 'G-code'), program);
+  });
+
+  download.addEventListener('click', async () => {
+    if (!calculated) return;
+    download.disabled = true;
+    try {
+      const answer = await postJson(PATH, calculated, 'text/plain');
+      if (!answer.ok) {
+        showFailure(form, answer, 'Download');
+        return;
+      }
+      const name = fileNameOf(answer.headers.get('Content-Disposition'), 'polygon-hole.ngc');
+      const url = URL.createObjectURL(new Blob([answer.text], { type: 'text/plain' }));
+      const link = h('a', { href: url, download: name, hidden: true });
+      document.body.append(link);
+      link.click();
+      link.remove();
+      setTimeout(() => URL.revokeObjectURL(url), 10000);
+    } catch (error) {
+      showMessage(form, `Download failed: ${error?.message ?? error}`);
+    } finally {
+      download.disabled = calculated === null;
+    }
+  });
+}
+
+function programResults(answer, container) {
+  const body = answer.json;
+  const warnings = Array.isArray(body.warnings) ? body.warnings : [];
+  const parts = [
+    h('h3', {}, 'Program and predicted hole'),
+    valueList(body, [
+      [['Eccentricity e'], '/eccentricity_mm', 'mm'],
+      [['Loop length ', ...sym('L', 'p')], '/loop_length_mm', 'mm'],
+      [['Feed per revolution'], '/feed_per_rev_mm', 'mm/rev'],
+      [['Arc blocks per loop'], '/blocks_per_loop', ''],
+      [['Largest path deviation'], '/max_path_deviation_mm', 'mm'],
+      [['Predicted overcut'], '/predicted_overcut_mm', 'mm'],
+      [['Corner gap g'], '/corner_gap_mm', 'mm'],
+      [['Uncut corner area'], '/uncut_corner_area_mm2', 'mm\u00b2'],
+      [['Block-rate feed limit'], '/max_feed_by_block_rate_mm_per_min', 'mm/min'],
+    ]),
+  ];
+  if (warnings.length) {
+    parts.push(
+      h(
+        'ul',
+        { class: 'warnings' },
+        warnings.map((_, i) =>
+          h('li', {}, value(body, `/warnings/${i}/code`), ': ', body.warnings[i].detail),
+        ),
+      ),
+    );
+  }
+  const geometry = body.geometry;
+  if (geometry && Array.isArray(geometry.polygon) && Array.isArray(geometry.predicted_hole)) {
+    parts.push(holeDiagram(geometry, container), cornerDiagram(geometry, body));
+  } else {
+    parts.push(
+      noDiagram(
+        answer.optInRefused
+          ? 'this service does not return the hole geometry yet.'
+          : 'the answer has no geometry.',
+      ),
+    );
+  }
+  return parts;
+}
+
+// Program coordinates (Y up) to screen.
+const toScreen = (x, y) => [x, -y];
+
+// The corner detail frames the material side of the vertex: the window's centre sits half a view
+// radius from the vertex towards the hole centre, so the corner wall fills it instead of a quarter.
+function cornerWindow(corner) {
+  const [vx, vy] = toScreen(corner.vertex.x_mm, corner.vertex.y_mm);
+  const radius = corner.view_radius_mm;
+  const length = Math.hypot(vx, vy);
+  const [ux, uy] = length > 0 ? [-vx / length, -vy / length] : [0, 0];
+  const half = 0.75 * radius;
+  return { vx, vy, radius, half, cx: vx + 0.5 * radius * ux, cy: vy + 0.5 * radius * uy };
+}
+
+function holeDiagram(geometry, container) {
+  const polygon = mapped(geometry.polygon, toScreen);
+  const hole = mapped(geometry.predicted_hole, toScreen);
+  const path = mapped(geometry.centre_path ?? [], toScreen);
+  const rotors = Array.isArray(geometry.rotor_positions) ? geometry.rotor_positions : [];
+  const box = new Bounds().addAll(polygon).addAll(hole).addAll(path);
+  rotors.forEach((r) => box.addAll(mapped(r.outline ?? [], toScreen)));
+  const detail = geometry.corner?.vertex && geometry.corner.view_radius_mm > 0
+    ? cornerWindow(geometry.corner)
+    : null;
+  if (detail) box.addCircle(detail.cx, detail.cy, Math.SQRT2 * detail.half);
+  const viewBox = box.viewBox(0.05);
+  const upp = unitsPerPixel(viewBox[2], container);
+  const svg = diagram(
+    'polygon-hole',
+    'Polygon hole: the ideal polygon, the tool-axis path, the rotor at a few phases and the predicted hole',
+    viewBox,
+  );
+  svg.append(
+    s('polygon', {
+      'data-role': 'predicted-hole',
+      class: 's-predicted-hole',
+      points: points(hole),
+    }),
+  );
+  svg.append(s('polygon', { 'data-role': 'polygon', class: 's-polygon', points: points(polygon) }));
+  rotors.forEach((rotor) => {
+    const [ax, ay] = toScreen(rotor.axis.x_mm, rotor.axis.y_mm);
+    svg.append(
+      s(
+        'g',
+        { 'data-role': 'rotor', 'data-phase-deg': rotor.phase_deg },
+        s('polygon', { class: 's-rotor', points: points(mapped(rotor.outline ?? [], toScreen)) }),
+        s('circle', { class: 's-rotor s-axis-dot', cx: ax, cy: ay, r: 3 * upp }),
+      ),
+    );
+  });
+  svg.append(
+    s('polygon', { 'data-role': 'centre-path', class: 's-centre-path', points: points(path) }),
+  );
+  svg.append(
+    s(
+      'g',
+      { 'data-role': 'hole-centre', 'aria-hidden': 'true' },
+      s('line', { class: 's-frame', x1: -6 * upp, y1: 0, x2: 6 * upp, y2: 0 }),
+      s('line', { class: 's-frame', x1: 0, y1: -6 * upp, x2: 0, y2: 6 * upp }),
+    ),
+  );
+  if (detail) {
+    svg.append(
+      s('rect', {
+        'data-role': 'corner-detail',
+        class: 's-dimension-extension',
+        x: detail.cx - detail.half,
+        y: detail.cy - detail.half,
+        width: 2 * detail.half,
+        height: 2 * detail.half,
+        fill: 'none',
+      }),
+    );
+  }
+  return figure(
+    svg,
+    [
+      { cls: 's-polygon', label: 'ideal polygon' },
+      { cls: 's-predicted-hole', label: 'predicted hole', shape: 'area' },
+      { cls: 's-centre-path', label: 'tool-axis path' },
+      { cls: 's-rotor', label: `rotor (${rotors.length} phases)` },
+    ],
+    'Program coordinates: hole centre X0 Y0, Y up; the dashed square marks the corner detail.',
+  );
+}
+
+function cornerDiagram(geometry, body) {
+  const corner = geometry.corner;
+  if (!corner?.vertex || !(corner.view_radius_mm > 0))
+    return noDiagram('the answer has no corner.');
+  const { vx, vy, radius, half, cx, cy } = cornerWindow(corner);
+  const viewBox = [cx - half, cy - half, 2 * half, 2 * half];
+  const svg = diagram(
+    'polygon-corner',
+    'Corner detail: the ideal polygon corner and the predicted hole',
+    viewBox,
+  );
+  svg.append(
+    s('polygon', {
+      'data-role': 'predicted-hole',
+      class: 's-predicted-hole',
+      points: points(mapped(geometry.predicted_hole, toScreen)),
+    }),
+    s('polygon', {
+      'data-role': 'polygon',
+      class: 's-polygon',
+      points: points(mapped(geometry.polygon, toScreen)),
+    }),
+    s('circle', { class: 's-vertex', cx: vx, cy: vy, r: radius * 0.015 }),
+    s(
+      'text',
+      { x: cx - half, y: cy - half, dx: '0.5em', dy: '1.3em' },
+      `corner gap g = ${fmt(body.corner_gap_mm)} mm`,
+    ),
+  );
+  return figure(svg, [
+    { cls: 's-polygon', label: 'ideal polygon' },
+    { cls: 's-predicted-hole', label: 'predicted hole', shape: 'area' },
+  ]);
+}
