@@ -69,5 +69,30 @@ TEST(FuzzRegression, EntrySchemeBandOfAnArcIsSignedFrameY) {
   EXPECT_NEAR(band.at("y_max_mm").get<double>(), 5.0, 1e-12);
 }
 
+// polygon_hole_gcode_fuzzer / _text_fuzzer (the 10^6-input report run): two legal requests at the
+// edge of the bounds, a 72 m triangle 360 mm deep (117 layers, 613 blocks a loop: an 8.3 MB
+// answer) and a 1 km triangle at 1e-6 rpm in c_axis mode (1483 blocks a loop), took over the
+// harness's 5 s per-input limit in the sanitized, coverage-instrumented build with its oracle (the
+// release service answers them in 0.13 s and 0.03 s). Not hangs: the per-input limit is now 30 s.
+// Pinned: both are answered 200 with a whole program under the size cap, never a 500.
+TEST(FuzzRegression, PolygonProgramsAtTheEdgeOfTheBoundsAreAnswered) {
+  const char* requests[] = {
+      R"({"depth_mm": 360.0, "faces": 3, "inscribed_diameter_mm": 72060,
+          "spindle_speed_rpm": 31.5, "step_down_mm": 3.1})",
+      R"({"depth_mm": 0.2, "faces": 3, "inscribed_diameter_mm": 999999.9999999999,
+          "spindle_speed_rpm": 1.0000000000000002e-06, "step_down_mm": 180.0,
+          "synchronization": "c_axis"})"};
+  for (const char* request : requests) {
+    const auto response = run("/v1/polygon-hole/gcode", request);
+    ASSERT_EQ(response.status, 200) << request;
+    const auto body = nlohmann::json::parse(response.body);
+    const auto program = body.at("program").get<std::string>();
+    EXPECT_EQ(program.rfind("%\n", 0), 0U) << request;
+    EXPECT_GE(program.size(), 3U);
+    EXPECT_EQ(program.substr(program.size() - 3), "\n%\n") << request;
+    EXPECT_LT(program.size(), std::size_t{16} << 20U) << request;
+  }
+}
+
 }  // namespace
 }  // namespace cutcalc::testing
