@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "support/openapi_contract.h"
+#include "support/project_contract.h"
 
 #ifndef CUTCALC_OPENAPI_PATH
 #error "CUTCALC_OPENAPI_PATH (path to openapi.yaml, a string literal) must be defined"
@@ -25,15 +25,11 @@
 namespace {
 
 using cutcalc::test_support::OpenApiContract;
+using cutcalc::test_support::project_contract;
 using nlohmann::json;
 
-const OpenApiContract& contract() {
-  static const OpenApiContract c = OpenApiContract::load(CUTCALC_OPENAPI_PATH);
-  return c;
-}
-
 const json& doc() {
-  static const json d = contract().document();
+  static const json d = project_contract().document();
   return d;
 }
 
@@ -230,7 +226,7 @@ json problem(const std::string& type, const std::string& title, int status,
 // ------------------------------------------------------------------------------------------------
 
 TEST(OpenApiDocument, LoadsAsOpenApi31WithInfoAndServers) {
-  ASSERT_NO_THROW(contract());
+  ASSERT_NO_THROW(project_contract());
   EXPECT_EQ(doc()["openapi"], "3.1.0");
   EXPECT_EQ(doc()["info"]["title"], "cutcalc");
   EXPECT_EQ(doc()["info"]["version"], "0.1.0");
@@ -290,7 +286,7 @@ TEST(OpenApiDocument, EveryRequestExampleMatchesItsSchema) {
       EXPECT_FALSE(examples.empty())
           << o.method << " " << o.path << " " << media_type << " has no request example";
       for (const auto& [name, value] : examples) {
-        const auto v = contract().check_request(o.method, o.path, value);
+        const auto v = project_contract().check_request(o.method, o.path, value);
         EXPECT_TRUE(v.empty()) << o.method << " " << o.path << " request example " << name
                                << join(v);
         ++checked;
@@ -311,8 +307,8 @@ TEST(OpenApiDocument, EveryResponseExampleMatchesItsSchema) {
         EXPECT_FALSE(examples.empty())
             << o.method << " " << o.path << " " << status << " " << media_type << " has no example";
         for (const auto& [name, value] : examples) {
-          const auto v =
-              contract().check_response(o.method, o.path, std::stoi(status), media_type, value);
+          const auto v = project_contract().check_response(o.method, o.path, std::stoi(status),
+                                                           media_type, value);
           EXPECT_TRUE(v.empty()) << o.method << " " << o.path << " " << status << " example "
                                  << name << join(v);
           ++checked;
@@ -323,7 +319,8 @@ TEST(OpenApiDocument, EveryResponseExampleMatchesItsSchema) {
   const json& unmatched = doc()["x-cutcalc-unmatched-route"]["response"]["content"];
   for (const auto& [media_type, media] : unmatched.items()) {
     for (const auto& [name, value] : examples_of(media)) {
-      const auto v = contract().check_response("GET", "/no/such/route", 404, media_type, value);
+      const auto v =
+          project_contract().check_response("GET", "/no/such/route", 404, media_type, value);
       EXPECT_TRUE(v.empty()) << "404 example " << name << join(v);
       ++checked;
     }
@@ -389,46 +386,50 @@ TEST(OpenApiDocument, EveryResponseCarriesXRequestIdAndEveryOperationAcceptsIt) 
 
 TEST(OpenApiDocument, CheckerRejectsWrongTypeMissingRequiredFieldAndExtraField) {
   const json good = entry_length_body();
-  ASSERT_TRUE(
-      contract().check_response("POST", "/v1/entry-length", 200, "application/json", good).empty());
+  ASSERT_TRUE(project_contract()
+                  .check_response("POST", "/v1/entry-length", 200, "application/json", good)
+                  .empty());
 
   json wrong_type = good;
   wrong_type["start"]["x_mm"] = "27.0";
-  auto v =
-      contract().check_response("POST", "/v1/entry-length", 200, "application/json", wrong_type);
+  auto v = project_contract().check_response("POST", "/v1/entry-length", 200, "application/json",
+                                             wrong_type);
   EXPECT_TRUE(names_pointer(v, "/start/x_mm")) << join(v);
 
   json missing = good;
   missing.erase("steady_width_mm");
-  v = contract().check_response("POST", "/v1/entry-length", 200, "application/json", missing);
+  v = project_contract().check_response("POST", "/v1/entry-length", 200, "application/json",
+                                        missing);
   EXPECT_FALSE(v.empty());
   EXPECT_TRUE(names_pointer(v, "/steady_width_mm")) << join(v);
 
   json extra = good;
   extra["steady_width"] = 25.0;
-  v = contract().check_response("POST", "/v1/entry-length", 200, "application/json", extra);
+  v = project_contract().check_response("POST", "/v1/entry-length", 200, "application/json", extra);
   EXPECT_TRUE(names_pointer(v, "/steady_width")) << join(v);
 
   json nested_extra = good;
   nested_extra["end"]["z_mm"] = 0.0;
-  v = contract().check_response("POST", "/v1/entry-length", 200, "application/json", nested_extra);
+  v = project_contract().check_response("POST", "/v1/entry-length", 200, "application/json",
+                                        nested_extra);
   EXPECT_TRUE(names_pointer(v, "/end/z_mm")) << join(v);
 
   json negative = good;
   negative["entry_length_mm"] = -1.0;
-  v = contract().check_response("POST", "/v1/entry-length", 200, "application/json", negative);
+  v = project_contract().check_response("POST", "/v1/entry-length", 200, "application/json",
+                                        negative);
   EXPECT_TRUE(names_pointer(v, "/entry_length_mm")) << join(v);
 
   json end_without_stroke = good;
   end_without_stroke.erase("working_stroke_mm");
-  v = contract().check_response("POST", "/v1/entry-length", 200, "application/json",
-                                end_without_stroke);
+  v = project_contract().check_response("POST", "/v1/entry-length", 200, "application/json",
+                                        end_without_stroke);
   EXPECT_FALSE(v.empty()) << "end without working_stroke_mm must be rejected";
 
   json without_exit = good;
   without_exit.erase("working_stroke_mm");
   without_exit.erase("end");
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response("POST", "/v1/entry-length", 200, "application/json", without_exit)
                   .empty());
 
@@ -436,33 +437,37 @@ TEST(OpenApiDocument, CheckerRejectsWrongTypeMissingRequiredFieldAndExtraField) 
       json::parse(R"({"spindle_speed_rpm": 1000.0, "feed_per_rev_mm": 0.4, "feed_mm_per_min": 400.0,
     "entry_feed_mm_per_min": 200.0, "depth_passes_mm": [2.0], "lateral_passes": [{"width_mm": 45.0}],
     "main_time_min": 1, "entry_time_min": 0.5, "steady_time_min": 0.5})");
-  v = contract().check_response("POST", "/v1/main-time", 200, "application/json", lateral);
+  v = project_contract().check_response("POST", "/v1/main-time", 200, "application/json", lateral);
   EXPECT_TRUE(names_pointer(v, "/lateral_passes/0")) << join(v);
 }
 
 TEST(OpenApiDocument, CheckerRejectsUndocumentedPathsOperationsStatusesAndMediaTypes) {
   const json body = entry_length_body();
-  EXPECT_FALSE(contract()
+  EXPECT_FALSE(project_contract()
                    .check_response("POST", "/v1/entry-lengths", 200, "application/json", body)
                    .empty());
+  EXPECT_FALSE(project_contract()
+                   .check_response("PUT", "/v1/entry-length", 200, "application/json", body)
+                   .empty());
+  EXPECT_FALSE(project_contract()
+                   .check_response("POST", "/v1/entry-length", 201, "application/json", body)
+                   .empty());
+  EXPECT_FALSE(project_contract()
+                   .check_response("POST", "/v1/entry-length", 200, "text/html", body)
+                   .empty());
   EXPECT_FALSE(
-      contract().check_response("PUT", "/v1/entry-length", 200, "application/json", body).empty());
-  EXPECT_FALSE(
-      contract().check_response("POST", "/v1/entry-length", 201, "application/json", body).empty());
-  EXPECT_FALSE(
-      contract().check_response("POST", "/v1/entry-length", 200, "text/html", body).empty());
-  EXPECT_FALSE(contract().check_response("POST", "/v1/entry-length", 200, "", body).empty());
+      project_contract().check_response("POST", "/v1/entry-length", 200, "", body).empty());
   EXPECT_TRUE(
-      contract()
+      project_contract()
           .check_response("post", "/v1/entry-length", 200, "application/json; charset=utf-8", body)
           .empty());
   // A success body is not a problem body, and the other way round.
   EXPECT_FALSE(
-      contract()
+      project_contract()
           .check_response("POST", "/v1/entry-length", 200, "application/problem+json", body)
           .empty());
   EXPECT_FALSE(
-      contract()
+      project_contract()
           .check_response("POST", "/v1/entry-length", 422, "application/json",
                           problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
                                   json::array({{{"pointer", "/entry"}, {"detail", "required"}}})))
@@ -474,128 +479,132 @@ TEST(OpenApiDocument, ProblemSchemasPinTypeTitleAndStatus) {
   const json field_error =
       json::array({{{"pointer", "/entry/width_mm"}, {"detail", "must be > 0"}}});
   const json combination = json::array({{{"pointer", ""}, {"detail", "no contact"}}});
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response("POST", "/v1/main-time", 422, pj,
                                   problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
                                           field_error))
                   .empty());
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response("POST", "/v1/main-time", 422, pj,
                                   problem("urn:cutcalc:problem:impossible-input",
                                           "Input impossible for the model", 422, combination))
                   .empty());
   // Title of the other 422 type, wrong type for the status, wrong status, no errors, bad pointer.
-  EXPECT_FALSE(contract()
+  EXPECT_FALSE(project_contract()
                    .check_response("POST", "/v1/main-time", 422, pj,
                                    problem("urn:cutcalc:problem:invalid-input",
                                            "Input impossible for the model", 422, field_error))
                    .empty());
-  EXPECT_FALSE(contract()
+  EXPECT_FALSE(project_contract()
                    .check_response("POST", "/v1/main-time", 422, pj,
                                    problem("urn:cutcalc:problem:malformed-json", "Malformed JSON",
                                            422, field_error))
                    .empty());
   EXPECT_FALSE(
-      contract()
+      project_contract()
           .check_response("POST", "/v1/main-time", 400, pj,
                           problem("urn:cutcalc:problem:malformed-json", "Malformed JSON", 422))
           .empty());
   EXPECT_FALSE(
-      contract()
+      project_contract()
           .check_response("POST", "/v1/main-time", 422, pj,
                           problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422))
           .empty());
-  auto v = contract().check_response(
+  auto v = project_contract().check_response(
       "POST", "/v1/main-time", 422, pj,
       problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
               json::array({{{"pointer", "entry"}, {"detail", "not a JSON Pointer"}}})));
   EXPECT_TRUE(names_pointer(v, "/errors/0/pointer")) << join(v);
   json no_errors = problem("urn:cutcalc:problem:payload-too-large", "Payload too large", 413);
   no_errors.erase("errors");
-  v = contract().check_response("POST", "/v1/main-time", 413, pj, no_errors);
+  v = project_contract().check_response("POST", "/v1/main-time", 413, pj, no_errors);
   EXPECT_TRUE(names_pointer(v, "/errors")) << join(v);
   json with_extension =
       problem("urn:cutcalc:problem:unsupported-media-type", "Unsupported media type", 415);
-  EXPECT_TRUE(contract().check_response("POST", "/v1/main-time", 415, pj, with_extension).empty());
+  EXPECT_TRUE(
+      project_contract().check_response("POST", "/v1/main-time", 415, pj, with_extension).empty());
   with_extension["hint"] = "use application/json";
-  v = contract().check_response("POST", "/v1/main-time", 415, pj, with_extension);
+  v = project_contract().check_response("POST", "/v1/main-time", 415, pj, with_extension);
   EXPECT_TRUE(names_pointer(v, "/hint")) << join(v);
   json float_status = problem("urn:cutcalc:problem:internal-error", "Internal error", 500);
   float_status["status"] = 500.5;
-  v = contract().check_response("POST", "/v1/main-time", 500, pj, float_status);
+  v = project_contract().check_response("POST", "/v1/main-time", 500, pj, float_status);
   EXPECT_TRUE(names_pointer(v, "/status")) << join(v);
 }
 
 TEST(OpenApiDocument, RouteFallbacksCover404And405AndTheirHeaders) {
   const std::string pj = "application/problem+json";
   const json not_found = problem("urn:cutcalc:problem:not-found", "Not found", 404);
-  EXPECT_TRUE(contract().check_response("GET", "/v1/nope", 404, pj, not_found).empty());
-  EXPECT_FALSE(contract()
+  EXPECT_TRUE(project_contract().check_response("GET", "/v1/nope", 404, pj, not_found).empty());
+  EXPECT_FALSE(project_contract()
                    .check_response("GET", "/v1/nope", 404, pj,
                                    problem("urn:cutcalc:problem:internal-error", "Not found", 404))
                    .empty());
-  EXPECT_FALSE(contract()
+  EXPECT_FALSE(project_contract()
                    .check_response("GET", "/v1/nope", 200, "application/json", json::object())
                    .empty());
 
   const json not_allowed =
       problem("urn:cutcalc:problem:method-not-allowed", "Method not allowed", 405);
-  EXPECT_TRUE(contract().check_response("GET", "/v1/entry-length", 405, pj, not_allowed).empty());
-  EXPECT_TRUE(contract().check_response("POST", "/healthz", 405, pj, not_allowed).empty());
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(
+      project_contract().check_response("GET", "/v1/entry-length", 405, pj, not_allowed).empty());
+  EXPECT_TRUE(project_contract().check_response("POST", "/healthz", 405, pj, not_allowed).empty());
+  EXPECT_TRUE(project_contract()
                   .check_response_headers("GET", "/v1/entry-length", 405,
                                           {{"allow", "POST"}, {"x-request-id", "a.b-c_1"}})
                   .empty());
-  auto v =
-      contract().check_response_headers("GET", "/v1/entry-length", 405, {{"X-Request-Id", "abc"}});
+  auto v = project_contract().check_response_headers("GET", "/v1/entry-length", 405,
+                                                     {{"X-Request-Id", "abc"}});
   EXPECT_EQ(v.size(), 1U) << join(v);  // Allow is missing
-  v = contract().check_response_headers("POST", "/v1/entry-length", 200, {});
+  v = project_contract().check_response_headers("POST", "/v1/entry-length", 200, {});
   EXPECT_EQ(v.size(), 1U) << join(v);  // X-Request-Id is missing
-  v = contract().check_response_headers("POST", "/v1/entry-length", 200,
-                                        {{"X-Request-Id", "has space"}});
+  v = project_contract().check_response_headers("POST", "/v1/entry-length", 200,
+                                                {{"X-Request-Id", "has space"}});
   EXPECT_EQ(v.size(), 1U) << join(v);
-  v = contract().check_response_headers("POST", "/v1/entry-length", 200,
-                                        {{"X-Request-Id", std::string(129, 'a')}});
+  v = project_contract().check_response_headers("POST", "/v1/entry-length", 200,
+                                                {{"X-Request-Id", std::string(129, 'a')}});
   EXPECT_EQ(v.size(), 1U) << join(v);
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response_headers("POST", "/v1/entry-length", 200,
                                           {{"X-Request-Id", std::string(128, 'a')}})
                   .empty());
 }
 
 TEST(OpenApiDocument, OperationalResponsesAreStrict) {
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response("GET", "/healthz", 200, "application/json", {{"status", "ok"}})
                   .empty());
   EXPECT_FALSE(
-      contract()
+      project_contract()
           .check_response("GET", "/healthz", 200, "application/json", {{"status", "ready"}})
           .empty());
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response("GET", "/readyz", 200, "application/json", {{"status", "ready"}})
                   .empty());
   EXPECT_TRUE(
-      contract()
+      project_contract()
           .check_response("GET", "/readyz", 503, "application/problem+json",
                           problem("urn:cutcalc:problem:unavailable", "Service unavailable", 503))
           .empty());
   const json version = {
       {"name", "cutcalc"}, {"version", "0.1.0"}, {"commit", "unknown"}, {"build_type", "Release"}};
-  EXPECT_TRUE(
-      contract().check_response("GET", "/version", 200, "application/json", version).empty());
+  EXPECT_TRUE(project_contract()
+                  .check_response("GET", "/version", 200, "application/json", version)
+                  .empty());
   json bad_version = version;
   bad_version["commit"] = "not a sha";
   EXPECT_TRUE(names_pointer(
-      contract().check_response("GET", "/version", 200, "application/json", bad_version),
+      project_contract().check_response("GET", "/version", 200, "application/json", bad_version),
       "/commit"));
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response("GET", "/metrics", 200,
                                   "text/plain; version=0.0.4; charset=utf-8", "# metrics\n")
                   .empty());
-  EXPECT_FALSE(
-      contract().check_response("GET", "/metrics", 200, "text/plain", "# metrics\n").empty());
+  EXPECT_FALSE(project_contract()
+                   .check_response("GET", "/metrics", 200, "text/plain", "# metrics\n")
+                   .empty());
   EXPECT_TRUE(
-      contract()
+      project_contract()
           .check_response("GET", "/openapi.yaml", 200, "application/yaml", "openapi: 3.1.0\n")
           .empty());
 }
@@ -603,177 +612,188 @@ TEST(OpenApiDocument, OperationalResponsesAreStrict) {
 TEST(OpenApiDocument, RequestSchemaEnforcesContourRules) {
   const json base = json::parse(R"({"cutter_diameter_mm": 20,
     "entry": {"contour": "straight", "width_mm": 60}})");
-  EXPECT_TRUE(contract().check_request("POST", "/v1/entry-length", base).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", "/v1/entry-length", base).empty());
 
   json wall_entry = base;
   wall_entry["entry"] = {{"contour", "wall"}, {"width_mm", 60}};
-  auto v = contract().check_request("POST", "/v1/entry-length", wall_entry);
+  auto v = project_contract().check_request("POST", "/v1/entry-length", wall_entry);
   EXPECT_TRUE(names_pointer(v, "/entry/contour")) << join(v);
 
   json with_wall_exit = base;
   with_wall_exit["exit"] = {{"contour", "wall"}, {"width_mm", 60}};
   with_wall_exit["length_mm"] = 100;
-  EXPECT_TRUE(contract().check_request("POST", "/v1/entry-length", with_wall_exit).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", "/v1/entry-length", with_wall_exit).empty());
 
   json radius_on_straight = base;
   radius_on_straight["entry"]["radius_mm"] = 10;
-  v = contract().check_request("POST", "/v1/entry-length", radius_on_straight);
+  v = project_contract().check_request("POST", "/v1/entry-length", radius_on_straight);
   EXPECT_TRUE(names_pointer(v, "/entry/radius_mm")) << join(v);
 
   json angle = base;
   angle["entry"]["angle_deg"] = 180;
-  v = contract().check_request("POST", "/v1/entry-length", angle);
+  v = project_contract().check_request("POST", "/v1/entry-length", angle);
   EXPECT_TRUE(names_pointer(v, "/entry/angle_deg")) << join(v);
 
   json concave_without_width = base;
   concave_without_width["entry"] = {{"contour", "concave_arc"}, {"radius_mm", 30}};
-  v = contract().check_request("POST", "/v1/entry-length", concave_without_width);
+  v = project_contract().check_request("POST", "/v1/entry-length", concave_without_width);
   EXPECT_TRUE(names_pointer(v, "/entry/width_mm")) << join(v);
 
   json convex_without_width = base;
   convex_without_width["entry"] = {{"contour", "convex_arc"}, {"radius_mm", 30}};
-  EXPECT_TRUE(contract().check_request("POST", "/v1/entry-length", convex_without_width).empty());
+  EXPECT_TRUE(
+      project_contract().check_request("POST", "/v1/entry-length", convex_without_width).empty());
 
   json exit_without_length = base;
   exit_without_length["exit"] = base["entry"];
-  EXPECT_FALSE(contract().check_request("POST", "/v1/entry-length", exit_without_length).empty());
+  EXPECT_FALSE(
+      project_contract().check_request("POST", "/v1/entry-length", exit_without_length).empty());
 
   json length_without_exit = base;
   length_without_exit["length_mm"] = 100;
-  EXPECT_FALSE(contract().check_request("POST", "/v1/entry-length", length_without_exit).empty());
+  EXPECT_FALSE(
+      project_contract().check_request("POST", "/v1/entry-length", length_without_exit).empty());
 
   json negative_approach = base;
   negative_approach["approach_mm"] = -0.5;
-  v = contract().check_request("POST", "/v1/entry-length", negative_approach);
+  v = project_contract().check_request("POST", "/v1/entry-length", negative_approach);
   EXPECT_TRUE(names_pointer(v, "/approach_mm")) << join(v);
 
-  EXPECT_TRUE(
-      names_pointer(contract().check_request("POST", "/v1/entry-length", json::array()), ""));
+  EXPECT_TRUE(names_pointer(
+      project_contract().check_request("POST", "/v1/entry-length", json::array()), ""));
 }
 
 TEST(OpenApiDocument, RequestSchemaEnforcesMainTimeCombinations) {
   const json good = main_time_request();
-  ASSERT_TRUE(contract().check_request("POST", "/v1/main-time", good).empty())
-      << join(contract().check_request("POST", "/v1/main-time", good));
+  ASSERT_TRUE(project_contract().check_request("POST", "/v1/main-time", good).empty())
+      << join(project_contract().check_request("POST", "/v1/main-time", good));
 
   json both_speeds = good;
   both_speeds["cutting_speed_m_per_min"] = 150;
-  EXPECT_FALSE(contract().check_request("POST", "/v1/main-time", both_speeds).empty());
+  EXPECT_FALSE(project_contract().check_request("POST", "/v1/main-time", both_speeds).empty());
 
   json no_speed = good;
   no_speed.erase("spindle_speed_rpm");
-  EXPECT_FALSE(contract().check_request("POST", "/v1/main-time", no_speed).empty());
+  EXPECT_FALSE(project_contract().check_request("POST", "/v1/main-time", no_speed).empty());
 
   json cutting_speed = no_speed;
   cutting_speed["cutting_speed_m_per_min"] = 150;
-  EXPECT_TRUE(contract().check_request("POST", "/v1/main-time", cutting_speed).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", "/v1/main-time", cutting_speed).empty());
 
   json both_entry_feeds = good;
   both_entry_feeds["entry_feed_per_tooth_mm"] = 0.05;
-  EXPECT_FALSE(contract().check_request("POST", "/v1/main-time", both_entry_feeds).empty());
+  EXPECT_FALSE(project_contract().check_request("POST", "/v1/main-time", both_entry_feeds).empty());
 
   json entry_feed_per_tooth = both_entry_feeds;
   entry_feed_per_tooth.erase("entry_feed_factor");
-  EXPECT_TRUE(contract().check_request("POST", "/v1/main-time", entry_feed_per_tooth).empty());
+  EXPECT_TRUE(
+      project_contract().check_request("POST", "/v1/main-time", entry_feed_per_tooth).empty());
 
   json factor = good;
   factor["entry_feed_factor"] = 1.0;
-  EXPECT_TRUE(contract().check_request("POST", "/v1/main-time", factor).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", "/v1/main-time", factor).empty());
   factor["entry_feed_factor"] = 1.01;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", factor),
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", "/v1/main-time", factor),
                             "/entry_feed_factor"));
   factor["entry_feed_factor"] = 0;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", factor),
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", "/v1/main-time", factor),
                             "/entry_feed_factor"));
 
   json teeth = good;
   teeth["teeth"] = 2.0;
-  EXPECT_TRUE(contract().check_request("POST", "/v1/main-time", teeth).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", "/v1/main-time", teeth).empty());
   teeth["teeth"] = 2.5;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", teeth), "/teeth"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", "/v1/main-time", teeth), "/teeth"));
   teeth["teeth"] = 0;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", teeth), "/teeth"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", "/v1/main-time", teeth), "/teeth"));
 
   json missing_allowance_member = good;
   missing_allowance_member["allowance"].erase("depth_mm");
-  EXPECT_TRUE(
-      names_pointer(contract().check_request("POST", "/v1/main-time", missing_allowance_member),
-                    "/allowance/depth_mm"));
+  EXPECT_TRUE(names_pointer(
+      project_contract().check_request("POST", "/v1/main-time", missing_allowance_member),
+      "/allowance/depth_mm"));
 
   json wall_exit = good;
   wall_exit["exit"] = {{"contour", "wall"}, {"width_mm", 80}};
-  EXPECT_TRUE(contract().check_request("POST", "/v1/main-time", wall_exit).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", "/v1/main-time", wall_exit).empty());
 
   json no_exit = good;
   no_exit.erase("exit");
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", "/v1/main-time", no_exit), "/exit"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", "/v1/main-time", no_exit), "/exit"));
 }
 
 TEST(OpenApiDocument, RequestSchemaEnforcesResultantSpeedsRules) {
   const std::string path = "/v1/resultant-speeds";
   const json good = resultant_speeds_request();
-  ASSERT_TRUE(contract().check_request("POST", path, good).empty())
-      << join(contract().check_request("POST", path, good));
+  ASSERT_TRUE(project_contract().check_request("POST", path, good).empty())
+      << join(project_contract().check_request("POST", path, good));
 
   // Exactly one of center_distance_mm and flat_depth_mm: both or neither is rejected at "".
   json both = good;
   both["center_distance_mm"] = 25.0;
-  auto v = contract().check_request("POST", path, both);
+  auto v = project_contract().check_request("POST", path, both);
   EXPECT_TRUE(names_pointer(v, "")) << join(v);
 
   json neither = good;
   neither.erase("flat_depth_mm");
-  v = contract().check_request("POST", path, neither);
+  v = project_contract().check_request("POST", path, neither);
   EXPECT_TRUE(names_pointer(v, "")) << join(v);
 
   json center_distance = neither;
   center_distance["center_distance_mm"] = 25.5;
-  EXPECT_TRUE(contract().check_request("POST", path, center_distance).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, center_distance).empty());
 
   json zero_distance = neither;
   zero_distance["center_distance_mm"] = 0;
-  v = contract().check_request("POST", path, zero_distance);
+  v = project_contract().check_request("POST", path, zero_distance);
   EXPECT_TRUE(names_pointer(v, "/center_distance_mm")) << join(v);
 
   // A still workpiece and a feed towards the workpiece axis are valid; a still tool is not.
   json still = good;
   still["workpiece_speed_rpm"] = 0;
   still["tool_feed_mm_per_min"] = -100;
-  EXPECT_TRUE(contract().check_request("POST", path, still).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, still).empty());
   json still_tool = good;
   still_tool["tool_speed_rpm"] = 0;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, still_tool), "/tool_speed_rpm"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", path, still_tool), "/tool_speed_rpm"));
   json feed_cap = good;
   feed_cap["tool_feed_mm_per_min"] = -1000001;
-  EXPECT_TRUE(
-      names_pointer(contract().check_request("POST", path, feed_cap), "/tool_feed_mm_per_min"));
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, feed_cap),
+                            "/tool_feed_mm_per_min"));
 
   json milling = good;
   milling["milling"] = "climb";
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, milling), "/milling"));
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, milling), "/milling"));
   milling.erase("milling");
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, milling), "/milling"));
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, milling), "/milling"));
 
   json angles = good;
   angles["contact_angles_deg"] = json::array({-5, 5, 0, 20.281649812950175, 5});
-  EXPECT_TRUE(contract().check_request("POST", path, angles).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, angles).empty());
   angles["contact_angles_deg"] = json::array();
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, angles), "/contact_angles_deg"));
-  angles["contact_angles_deg"] = json(std::vector<double>(1001, 0.0));
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, angles), "/contact_angles_deg"));
-  angles["contact_angles_deg"] = json::array({0, "10"});
   EXPECT_TRUE(
-      names_pointer(contract().check_request("POST", path, angles), "/contact_angles_deg/1"));
+      names_pointer(project_contract().check_request("POST", path, angles), "/contact_angles_deg"));
+  angles["contact_angles_deg"] = json(std::vector<double>(1001, 0.0));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", path, angles), "/contact_angles_deg"));
+  angles["contact_angles_deg"] = json::array({0, "10"});
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, angles),
+                            "/contact_angles_deg/1"));
   angles["contact_angles_deg"] = 0;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, angles), "/contact_angles_deg"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", path, angles), "/contact_angles_deg"));
 
   json lambda = good;
   lambda["edge_inclination_deg"] = -89.999;
-  EXPECT_TRUE(contract().check_request("POST", path, lambda).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, lambda).empty());
   for (const double bad : {90.0, -90.0}) {
     lambda["edge_inclination_deg"] = bad;
-    EXPECT_TRUE(
-        names_pointer(contract().check_request("POST", path, lambda), "/edge_inclination_deg"))
+    EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, lambda),
+                              "/edge_inclination_deg"))
         << bad;
   }
 }
@@ -781,118 +801,125 @@ TEST(OpenApiDocument, RequestSchemaEnforcesResultantSpeedsRules) {
 TEST(OpenApiDocument, RequestSchemaEnforcesGrooveWallRules) {
   const std::string path = "/v1/roughness/groove-wall";
   const json good = groove_wall_request();
-  ASSERT_TRUE(contract().check_request("POST", path, good).empty())
-      << join(contract().check_request("POST", path, good));
+  ASSERT_TRUE(project_contract().check_request("POST", path, good).empty())
+      << join(project_contract().check_request("POST", path, good));
 
   json no_target = good;
   no_target.erase("target_rz_um");
-  EXPECT_TRUE(contract().check_request("POST", path, no_target).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, no_target).empty());
 
   // phi1 = 0 is valid on its own (Rz = 0) but has no largest feed for a target.
   json flat_minor_edge = no_target;
   flat_minor_edge["minor_edge_angle_deg"] = 0;
-  EXPECT_TRUE(contract().check_request("POST", path, flat_minor_edge).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, flat_minor_edge).empty());
   for (const json& zero : {json(0), json(0.0)}) {
     json target_without_angle = good;
     target_without_angle["minor_edge_angle_deg"] = zero;
-    const auto v = contract().check_request("POST", path, target_without_angle);
+    const auto v = project_contract().check_request("POST", path, target_without_angle);
     EXPECT_TRUE(names_pointer(v, "")) << zero.dump() << join(v);
   }
 
   json angle = good;
   angle["minor_edge_angle_deg"] = 89.9;
-  EXPECT_TRUE(contract().check_request("POST", path, angle).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, angle).empty());
   angle["minor_edge_angle_deg"] = 90;
-  EXPECT_TRUE(
-      names_pointer(contract().check_request("POST", path, angle), "/minor_edge_angle_deg"));
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, angle),
+                            "/minor_edge_angle_deg"));
   angle["minor_edge_angle_deg"] = -0.1;
-  EXPECT_TRUE(
-      names_pointer(contract().check_request("POST", path, angle), "/minor_edge_angle_deg"));
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, angle),
+                            "/minor_edge_angle_deg"));
 
   json target = good;
   target["target_rz_um"] = 0;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, target), "/target_rz_um"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", path, target), "/target_rz_um"));
   target["target_rz_um"] = 1.0e9;
-  EXPECT_TRUE(contract().check_request("POST", path, target).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, target).empty());
   target["target_rz_um"] = 1.1e9;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, target), "/target_rz_um"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", path, target), "/target_rz_um"));
 
   json missing = good;
   missing.erase("feed_mm");
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, missing), "/feed_mm"));
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, missing), "/feed_mm"));
 }
 
 TEST(OpenApiDocument, RequestSchemaEnforcesBoreMillingRules) {
   const std::string path = "/v1/roughness/bore-milling";
   const json good = bore_milling_request();
-  ASSERT_TRUE(contract().check_request("POST", path, good).empty())
-      << join(contract().check_request("POST", path, good));
+  ASSERT_TRUE(project_contract().check_request("POST", path, good).empty())
+      << join(project_contract().check_request("POST", path, good));
 
   json teeth = good;
   teeth["teeth"] = 2.0;
-  EXPECT_TRUE(contract().check_request("POST", path, teeth).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, teeth).empty());
   for (const json& bad : {json(2.5), json(0), json(1001), json("4")}) {
     teeth["teeth"] = bad;
-    EXPECT_TRUE(names_pointer(contract().check_request("POST", path, teeth), "/teeth"))
+    EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, teeth), "/teeth"))
         << bad.dump();
   }
 
   json feed = good;
   feed["feed_per_rev_mm"] = 0;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, feed), "/feed_per_rev_mm"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", path, feed), "/feed_per_rev_mm"));
 
   json milling = good;
   milling["milling"] = "down";
-  EXPECT_TRUE(contract().check_request("POST", path, milling).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, milling).empty());
   milling.erase("milling");
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, milling), "/milling"));
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, milling), "/milling"));
 
   // r < R relates two fields: the schema cannot state it (the service answers 422 at
   // /cutter_radius_mm), so such a request passes the schema.
   json equal_radii = good;
   equal_radii["cutter_radius_mm"] = 81.0;
-  EXPECT_TRUE(contract().check_request("POST", path, equal_radii).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, equal_radii).empty());
 }
 
 TEST(OpenApiDocument, NewCalculationResponsesAreStrict) {
   const std::string aj = "application/json";
   const json rs = resultant_speeds_body();
-  ASSERT_TRUE(contract().check_response("POST", "/v1/resultant-speeds", 200, aj, rs).empty());
+  ASSERT_TRUE(
+      project_contract().check_response("POST", "/v1/resultant-speeds", 200, aj, rs).empty());
   json missing = rs;
   missing["points"][0].erase("kinematic_ratio");
-  auto v = contract().check_response("POST", "/v1/resultant-speeds", 200, aj, missing);
+  auto v = project_contract().check_response("POST", "/v1/resultant-speeds", 200, aj, missing);
   EXPECT_TRUE(names_pointer(v, "/points/0")) << join(v);
   json sense = rs;
   sense["points"][0]["sense"] = "climb";
-  v = contract().check_response("POST", "/v1/resultant-speeds", 200, aj, sense);
+  v = project_contract().check_response("POST", "/v1/resultant-speeds", 200, aj, sense);
   EXPECT_TRUE(names_pointer(v, "/points/0/sense")) << join(v);
   json negative = rs;
   negative["points"][0]["resultant_speed_m_per_min"] = -1.0;
-  v = contract().check_response("POST", "/v1/resultant-speeds", 200, aj, negative);
+  v = project_contract().check_response("POST", "/v1/resultant-speeds", 200, aj, negative);
   EXPECT_TRUE(names_pointer(v, "/points/0/resultant_speed_m_per_min")) << join(v);
   json signed_along_edge = rs;
   signed_along_edge["points"][0]["along_edge_speed_m_per_min"] = -93.77;
   signed_along_edge["points"][0]["resultant_angle_deg"] = -179.5;
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response("POST", "/v1/resultant-speeds", 200, aj, signed_along_edge)
                   .empty());
   json no_points = rs;
   no_points["points"] = json::array();
   EXPECT_TRUE(names_pointer(
-      contract().check_response("POST", "/v1/resultant-speeds", 200, aj, no_points), "/points"));
+      project_contract().check_response("POST", "/v1/resultant-speeds", 200, aj, no_points),
+      "/points"));
 
   const json gw = {{"rz_um", 2.6248327576439583},
                    {"branch", "nose_arc_and_minor_edge"},
                    {"max_feed_mm", 0.4712450622448343}};
-  EXPECT_TRUE(contract().check_response("POST", "/v1/roughness/groove-wall", 200, aj, gw).empty());
+  EXPECT_TRUE(
+      project_contract().check_response("POST", "/v1/roughness/groove-wall", 200, aj, gw).empty());
   json branch = gw;
   branch["branch"] = "minor_edge";
   EXPECT_TRUE(names_pointer(
-      contract().check_response("POST", "/v1/roughness/groove-wall", 200, aj, branch), "/branch"));
+      project_contract().check_response("POST", "/v1/roughness/groove-wall", 200, aj, branch),
+      "/branch"));
   json negative_rz = gw;
   negative_rz["rz_um"] = -0.5;
   EXPECT_TRUE(names_pointer(
-      contract().check_response("POST", "/v1/roughness/groove-wall", 200, aj, negative_rz),
+      project_contract().check_response("POST", "/v1/roughness/groove-wall", 200, aj, negative_rz),
       "/rz_um"));
 
   const json bm = {{"cusp_height_um", 0.016043564224403145},
@@ -900,110 +927,114 @@ TEST(OpenApiDocument, NewCalculationResponsesAreStrict) {
                    {"feed_per_tooth_mm", 0.05},
                    {"feed_per_tooth_on_bore_mm", 0.08333333333333333},
                    {"pitch_angle_deg", 0.0589849078927141}};
-  EXPECT_TRUE(contract().check_response("POST", "/v1/roughness/bore-milling", 200, aj, bm).empty());
+  EXPECT_TRUE(
+      project_contract().check_response("POST", "/v1/roughness/bore-milling", 200, aj, bm).empty());
   json no_pitch = bm;
   no_pitch.erase("pitch_angle_deg");
   EXPECT_TRUE(names_pointer(
-      contract().check_response("POST", "/v1/roughness/bore-milling", 200, aj, no_pitch),
+      project_contract().check_response("POST", "/v1/roughness/bore-milling", 200, aj, no_pitch),
       "/pitch_angle_deg"));
   json extra = bm;
   extra["cusp_height_mm"] = 1.6e-5;
-  EXPECT_TRUE(
-      names_pointer(contract().check_response("POST", "/v1/roughness/bore-milling", 200, aj, extra),
-                    "/cusp_height_mm"));
+  EXPECT_TRUE(names_pointer(
+      project_contract().check_response("POST", "/v1/roughness/bore-milling", 200, aj, extra),
+      "/cusp_height_mm"));
 }
 
 TEST(OpenApiDocument, RequestSchemaEnforcesPolygonHoleRules) {
   const std::string path = "/v1/polygon-hole/gcode";
   const json good = polygon_hole_request();
-  ASSERT_TRUE(contract().check_request("POST", path, good).empty())
-      << join(contract().check_request("POST", path, good));
+  ASSERT_TRUE(project_contract().check_request("POST", path, good).empty())
+      << join(project_contract().check_request("POST", path, good));
 
   // faces: an integer-valued number 3..12 (spec section 10: 4 and 4.0 accepted).
   json faces = good;
   for (const json& ok : {json(3), json(12), json(4.0)}) {
     faces["faces"] = ok;
-    EXPECT_TRUE(contract().check_request("POST", path, faces).empty()) << ok.dump();
+    EXPECT_TRUE(project_contract().check_request("POST", path, faces).empty()) << ok.dump();
   }
   for (const json& bad : {json(2), json(13), json(4.5), json("6"), json(nullptr)}) {
     faces["faces"] = bad;
-    EXPECT_TRUE(names_pointer(contract().check_request("POST", path, faces), "/faces"))
+    EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, faces), "/faces"))
         << bad.dump();
   }
 
   json diameter = good;
   diameter["inscribed_diameter_mm"] = 1;
-  EXPECT_TRUE(contract().check_request("POST", path, diameter).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, diameter).empty());
   for (const double bad : {0.999, 0.0, -16.0, 1000001.0}) {
     diameter["inscribed_diameter_mm"] = bad;
-    EXPECT_TRUE(
-        names_pointer(contract().check_request("POST", path, diameter), "/inscribed_diameter_mm"))
+    EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, diameter),
+                              "/inscribed_diameter_mm"))
         << bad;
   }
 
   // A step larger than the depth is one layer, not an error.
   json one_layer = good;
   one_layer["step_down_mm"] = 5.0;
-  EXPECT_TRUE(contract().check_request("POST", path, one_layer).empty());
+  EXPECT_TRUE(project_contract().check_request("POST", path, one_layer).empty());
   for (const char* field : {"depth_mm", "step_down_mm", "spindle_speed_rpm"}) {
     json positive = good;
     positive[field] = 0;
-    EXPECT_TRUE(
-        names_pointer(contract().check_request("POST", path, positive), std::string("/") + field))
+    EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, positive),
+                              std::string("/") + field))
         << field;
     positive[field] = 1.0e-7;
-    EXPECT_TRUE(
-        names_pointer(contract().check_request("POST", path, positive), std::string("/") + field))
+    EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, positive),
+                              std::string("/") + field))
         << field;
     positive.erase(field);
-    EXPECT_TRUE(
-        names_pointer(contract().check_request("POST", path, positive), std::string("/") + field))
+    EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, positive),
+                              std::string("/") + field))
         << field << " is required";
   }
 
   json tolerance = good;
   for (const double ok : {0.0001, 0.005, 0.1}) {
     tolerance["tolerance_mm"] = ok;
-    EXPECT_TRUE(contract().check_request("POST", path, tolerance).empty()) << ok;
+    EXPECT_TRUE(project_contract().check_request("POST", path, tolerance).empty()) << ok;
   }
   for (const double bad : {0.0, 0.00009, 0.11}) {
     tolerance["tolerance_mm"] = bad;
-    EXPECT_TRUE(names_pointer(contract().check_request("POST", path, tolerance), "/tolerance_mm"))
+    EXPECT_TRUE(
+        names_pointer(project_contract().check_request("POST", path, tolerance), "/tolerance_mm"))
         << bad;
   }
 
   json sync = good;
   for (const char* ok : {"feed_per_rev", "c_axis"}) {
     sync["synchronization"] = ok;
-    EXPECT_TRUE(contract().check_request("POST", path, sync).empty()) << ok;
+    EXPECT_TRUE(project_contract().check_request("POST", path, sync).empty()) << ok;
   }
   sync["synchronization"] = "g95";
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, sync), "/synchronization"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_request("POST", path, sync), "/synchronization"));
 
   json loops = good;
   for (const json& ok : {json(1), json(100), json(3.0)}) {
     loops["loops_per_layer"] = ok;
-    EXPECT_TRUE(contract().check_request("POST", path, loops).empty()) << ok.dump();
+    EXPECT_TRUE(project_contract().check_request("POST", path, loops).empty()) << ok.dump();
   }
   for (const json& bad : {json(0), json(101), json(1.5)}) {
     loops["loops_per_layer"] = bad;
-    EXPECT_TRUE(names_pointer(contract().check_request("POST", path, loops), "/loops_per_layer"))
+    EXPECT_TRUE(
+        names_pointer(project_contract().check_request("POST", path, loops), "/loops_per_layer"))
         << bad.dump();
   }
 
   for (const char* field : {"safe_z_mm", "block_time_ms"}) {
     json positive = good;
     positive[field] = 0.5;
-    EXPECT_TRUE(contract().check_request("POST", path, positive).empty()) << field;
+    EXPECT_TRUE(project_contract().check_request("POST", path, positive).empty()) << field;
     positive[field] = 0;
-    EXPECT_TRUE(
-        names_pointer(contract().check_request("POST", path, positive), std::string("/") + field))
+    EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, positive),
+                              std::string("/") + field))
         << field;
   }
 
   json typo = good;
   typo["tolerence_mm"] = 0.001;
-  EXPECT_TRUE(names_pointer(contract().check_request("POST", path, typo), "/tolerence_mm"));
+  EXPECT_TRUE(names_pointer(project_contract().check_request("POST", path, typo), "/tolerence_mm"));
 }
 
 TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
@@ -1011,70 +1042,75 @@ TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
   const std::string aj = "application/json";
   const std::string text = "text/plain; charset=us-ascii";
   const json good = polygon_hole_body();
-  ASSERT_TRUE(contract().check_response("POST", path, 200, aj, good).empty())
-      << join(contract().check_response("POST", path, 200, aj, good));
+  ASSERT_TRUE(project_contract().check_response("POST", path, 200, aj, good).empty())
+      << join(project_contract().check_response("POST", path, 200, aj, good));
 
   for (const auto& [key, unused] : good.items()) {
     json missing = good;
     missing.erase(key);
-    EXPECT_TRUE(names_pointer(contract().check_response("POST", path, 200, aj, missing), "/" + key))
+    EXPECT_TRUE(
+        names_pointer(project_contract().check_response("POST", path, 200, aj, missing), "/" + key))
         << key << " must be required";
   }
   json no_warnings = good;
   no_warnings["warnings"] = json::array();
-  EXPECT_TRUE(contract().check_response("POST", path, 200, aj, no_warnings).empty());
+  EXPECT_TRUE(project_contract().check_response("POST", path, 200, aj, no_warnings).empty());
   json both_warnings = good;
   both_warnings["warnings"].push_back({{"code", "feed_exceeds_block_rate"}, {"detail", "x"}});
-  EXPECT_TRUE(contract().check_response("POST", path, 200, aj, both_warnings).empty());
+  EXPECT_TRUE(project_contract().check_response("POST", path, 200, aj, both_warnings).empty());
   json bad_code = good;
   bad_code["warnings"][0]["code"] = "phase_slip";
-  EXPECT_TRUE(names_pointer(contract().check_response("POST", path, 200, aj, bad_code),
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, bad_code),
                             "/warnings/0/code"));
   json no_detail = good;
   no_detail["warnings"][0].erase("detail");
-  EXPECT_TRUE(names_pointer(contract().check_response("POST", path, 200, aj, no_detail),
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, no_detail),
                             "/warnings/0/detail"));
   json negative = good;
   negative["corner_gap_mm"] = -0.1;
-  EXPECT_TRUE(
-      names_pointer(contract().check_response("POST", path, 200, aj, negative), "/corner_gap_mm"));
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, negative),
+                            "/corner_gap_mm"));
   json blocks = good;
   blocks["blocks_per_loop"] = 0;
-  EXPECT_TRUE(
-      names_pointer(contract().check_response("POST", path, 200, aj, blocks), "/blocks_per_loop"));
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, blocks),
+                            "/blocks_per_loop"));
   blocks["blocks_per_loop"] = 24.5;
-  EXPECT_TRUE(
-      names_pointer(contract().check_response("POST", path, 200, aj, blocks), "/blocks_per_loop"));
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, blocks),
+                            "/blocks_per_loop"));
   json extra = good;
   extra["side_mm"] = 16.0;
-  EXPECT_TRUE(names_pointer(contract().check_response("POST", path, 200, aj, extra), "/side_mm"));
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_response("POST", path, 200, aj, extra), "/side_mm"));
   json not_a_program = good;
   not_a_program["program"] = "G21 G17 G90\nM30\n";
-  EXPECT_TRUE(
-      names_pointer(contract().check_response("POST", path, 200, aj, not_a_program), "/program"));
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, not_a_program),
+                            "/program"));
 
   // The plain answer: exactly the media type the service sends, a string body with the header.
   const std::string program = polygon_program(4, 16.0);
-  EXPECT_TRUE(contract().check_response("POST", path, 200, text, program).empty())
-      << join(contract().check_response("POST", path, 200, text, program));
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract().check_response("POST", path, 200, text, program).empty())
+      << join(project_contract().check_response("POST", path, 200, text, program));
+  EXPECT_TRUE(project_contract()
                   .check_response("POST", path, 200, "text/plain; charset=US-ASCII", program)
                   .empty());
-  EXPECT_FALSE(contract().check_response("POST", path, 200, "text/plain", program).empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 200, "text/plain", program).empty());
+  EXPECT_FALSE(project_contract()
+                   .check_response("POST", path, 200, "text/plain; charset=utf-8", program)
+                   .empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 200, text, good).empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 200, text, "M30\n").empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 200, aj, program).empty());
+  EXPECT_TRUE(
+      project_contract().check_response("POST", path, 200, text, polygon_program(12, 1.0)).empty());
   EXPECT_FALSE(
-      contract().check_response("POST", path, 200, "text/plain; charset=utf-8", program).empty());
-  EXPECT_FALSE(contract().check_response("POST", path, 200, text, good).empty());
-  EXPECT_FALSE(contract().check_response("POST", path, 200, text, "M30\n").empty());
-  EXPECT_FALSE(contract().check_response("POST", path, 200, aj, program).empty());
-  EXPECT_TRUE(contract().check_response("POST", path, 200, text, polygon_program(12, 1.0)).empty());
-  EXPECT_FALSE(
-      contract().check_response("POST", path, 200, text, polygon_program(13, 1.0)).empty());
+      project_contract().check_response("POST", path, 200, text, polygon_program(13, 1.0)).empty());
 
   // Content-Disposition: optional (absent with JSON), its file name fixed by N and d.
+  EXPECT_TRUE(project_contract()
+                  .check_response_headers("POST", path, 200, {{"X-Request-Id", "abc"}})
+                  .empty());
   EXPECT_TRUE(
-      contract().check_response_headers("POST", path, 200, {{"X-Request-Id", "abc"}}).empty());
-  EXPECT_TRUE(
-      contract()
+      project_contract()
           .check_response_headers(
               "POST", path, 200,
               {{"X-Request-Id", "abc"},
@@ -1083,7 +1119,7 @@ TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
   for (const char* bad : {R"(attachment; filename="polygon-hole-N4-d16.ngc")",
                           R"(inline; filename="polygon-hole-N4-d16.0000.ngc")",
                           R"(attachment; filename="polygon-hole-N2-d16.0000.ngc")"}) {
-    EXPECT_EQ(contract()
+    EXPECT_EQ(project_contract()
                   .check_response_headers("POST", path, 200,
                                           {{"X-Request-Id", "abc"}, {"Content-Disposition", bad}})
                   .size(),
@@ -1094,22 +1130,22 @@ TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
   // Errors are problem+json whatever Accept asked for; both 422 kinds are documented.
   const std::string pj = "application/problem+json";
   const json field_errors = json::array({{{"pointer", "/faces"}, {"detail", "must be <= 12"}}});
-  EXPECT_TRUE(contract()
+  EXPECT_TRUE(project_contract()
                   .check_response("POST", path, 422, pj,
                                   problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
                                           field_errors))
                   .empty());
   EXPECT_TRUE(
-      contract()
+      project_contract()
           .check_response(
               "POST", path, 422, pj,
               problem("urn:cutcalc:problem:impossible-input", "Input impossible for the model", 422,
                       json::array({{{"pointer", "/step_down_mm"},
                                     {"detail", "more than 200000 arc blocks"}}})))
           .empty());
-  EXPECT_FALSE(contract().check_response("POST", path, 422, text, "(ERROR)").empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 422, text, "(ERROR)").empty());
   EXPECT_TRUE(
-      contract()
+      project_contract()
           .check_response_headers("GET", path, 405, {{"Allow", "POST"}, {"X-Request-Id", "a"}})
           .empty());
   for (const int status : {400, 405, 413, 415, 500, 503}) {
@@ -1151,12 +1187,13 @@ TEST(OpenApiDocument, ReferenceCasesSatisfyTheContract) {
     const bool new_file = file != "entry-length.json" && file != "main-time.json";
     for (const auto& c : cases["cases"]) {
       const std::string id = c["id"].get<std::string>();
-      const auto request_violations = contract().check_request("POST", path, c["request"]);
+      const auto request_violations = project_contract().check_request("POST", path, c["request"]);
       if (c["expect"]["status"] == 200) {
         EXPECT_TRUE(request_violations.empty()) << file << " " << id << join(request_violations);
         const json body =
             file == "polygon-hole.json" ? complete_polygon_body(c) : c["expect"]["body"];
-        const auto v = contract().check_response("POST", path, 200, "application/json", body);
+        const auto v =
+            project_contract().check_response("POST", path, 200, "application/json", body);
         EXPECT_TRUE(v.empty()) << file << " " << id << join(v);
       } else {
         EXPECT_EQ(c["expect"]["status"], 422) << file << " " << id;

@@ -3,17 +3,10 @@
 #include <algorithm>
 #include <cctype>
 
-#include "support/openapi_contract.h"
+#include "support/project_contract.h"
 
 namespace cutcalc::testing {
-namespace {
-
-const test_support::OpenApiContract& contract() {
-  static const auto loaded = test_support::OpenApiContract::load(CUTCALC_OPENAPI_PATH);
-  return loaded;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<ReferenceCase> load_cases(const std::string& file_name) {
   std::vector<ReferenceCase> cases;
@@ -61,7 +54,7 @@ JsonReply replay_reference_case(const ReferenceCase& reference, const ToleranceF
     EXPECT_TRUE(problem_names_pointer(reply.json, pointer))
         << "expected an error at pointer \"" << pointer << "\"";
   }
-  for (const std::string& violation : contract().check_response(
+  for (const std::string& violation : test_support::project_contract().check_response(
            "post", reference.endpoint, reply.status, reply.content_type, reply.json)) {
     ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
   }

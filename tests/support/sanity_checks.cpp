@@ -2,16 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include "support/openapi_contract.h"
+#include "support/project_contract.h"
 #include "support/quantity_keys.h"
 
 namespace cutcalc::testing {
 namespace {
-
-const test_support::OpenApiContract& contract() {
-  static const auto loaded = test_support::OpenApiContract::load(CUTCALC_OPENAPI_PATH);
-  return loaded;
-}
 
 void expect_no_negative_lengths(const nlohmann::json& value, const std::string& key,
                                 const std::string& request) {
@@ -48,8 +43,8 @@ int expect_sane_answer(const char* path, api::JsonHandler handler, const nlohman
   if (response.status == 200) {
     expect_no_negative_lengths(parsed, "", body);
   }
-  for (const std::string& violation :
-       contract().check_response("post", path, response.status, response.content_type, parsed)) {
+  for (const std::string& violation : test_support::project_contract().check_response(
+           "post", path, response.status, response.content_type, parsed)) {
     ADD_FAILURE() << violation << "\nrequest: " << body << "\nresponse: " << response.body;
   }
   return response.status;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "api/entry/entry_length_endpoint.h"
-#include "support/openapi_contract.h"
+#include "support/project_contract.h"
 #include "support/reference_compare.h"
 #include "support/sanity_checks.h"
 #include "support/test_server.h"
@@ -23,11 +23,6 @@ namespace {
 using nlohmann::json;
 
 const char* kPath = "/v1/entry-length";
-
-const test_support::OpenApiContract& contract() {
-  static const auto loaded = test_support::OpenApiContract::load(CUTCALC_OPENAPI_PATH);
-  return loaded;
-}
 
 json straight(double width, double angle = 90.0) {
   return {{"contour", "straight"}, {"width_mm", width}, {"angle_deg", angle}};
@@ -62,15 +57,16 @@ std::vector<json> sample_requests() {
 }
 
 void expect_response_conforms(const JsonReply& reply) {
-  for (const auto& violation :
-       contract().check_response("post", kPath, reply.status, reply.content_type, reply.json)) {
+  for (const auto& violation : test_support::project_contract().check_response(
+           "post", kPath, reply.status, reply.content_type, reply.json)) {
     ADD_FAILURE() << violation << "\nresponse: " << reply.body;
   }
 }
 
 // A valid request and its answer both match openapi.yaml.
 void expect_conforms(const json& request, const JsonReply& reply) {
-  for (const auto& violation : contract().check_request("post", kPath, request)) {
+  for (const auto& violation :
+       test_support::project_contract().check_request("post", kPath, request)) {
     ADD_FAILURE() << "request: " << violation;
   }
   expect_response_conforms(reply);

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "api/kinematics/resultant_speeds_endpoint.h"
-#include "support/openapi_contract.h"
+#include "support/project_contract.h"
 #include "support/reference_compare.h"
 #include "support/sanity_checks.h"
 #include "support/test_server.h"
@@ -20,11 +20,6 @@ namespace {
 using nlohmann::json;
 
 const char* kPath = "/v1/resultant-speeds";
-
-const test_support::OpenApiContract& contract() {
-  static const auto loaded = test_support::OpenApiContract::load(CUTCALC_OPENAPI_PATH);
-  return loaded;
-}
 
 // rs-sample-up (spec resultant-speeds.md section 6).
 json sample(const char* milling = "up") {
@@ -38,22 +33,12 @@ json with_samples(json request, const json& count) {
   return request;
 }
 
-JsonReply post_ok(const json& request) {
-  const JsonReply reply = post(kPath, request.dump());
-  EXPECT_EQ(reply.status, 200) << reply.body;
-  for (const std::string& violation :
-       contract().check_response("post", kPath, reply.status, reply.content_type, reply.json)) {
-    ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
-  }
-  return reply;
-}
-
 TEST(ResultantSpeedsArcSamplesApi, PointsRunFromEntryToExitEvenlySpaced) {
   for (const char* milling : {"up", "down"}) {
-    const JsonReply defaults = post_ok(sample(milling));
+    const JsonReply defaults = post_ok(kPath, sample(milling));
     for (const int count : {2, 3, 90, 361}) {
       SCOPED_TRACE(::testing::Message() << milling << " " << count);
-      const JsonReply reply = post_ok(with_samples(sample(milling), count));
+      const JsonReply reply = post_ok(kPath, with_samples(sample(milling), count));
       const json& points = reply.json.at("points");
       ASSERT_EQ(points.size(), static_cast<std::size_t>(count));
       const double rho_e = reply.json.at("engagement_half_angle_deg").get<double>();
@@ -71,14 +56,14 @@ TEST(ResultantSpeedsArcSamplesApi, PointsRunFromEntryToExitEvenlySpaced) {
 }
 
 TEST(ResultantSpeedsArcSamplesApi, ValuesEqualTheSameExplicitAngles) {
-  const JsonReply sampled = post_ok(with_samples(sample("down"), 25));
+  const JsonReply sampled = post_ok(kPath, with_samples(sample("down"), 25));
   json angles = json::array();
   for (const json& point : sampled.json.at("points")) {
     angles.push_back(point.at("contact_angle_deg"));
   }
   json request = sample("down");
   request["contact_angles_deg"] = angles;
-  const JsonReply explicit_angles = post_ok(request);
+  const JsonReply explicit_angles = post_ok(kPath, request);
   EXPECT_EQ(sampled.json, explicit_angles.json);
   // Through the JSON text and back, the angles are the same doubles.
   EXPECT_EQ(sampled.body, explicit_angles.body);
@@ -86,10 +71,11 @@ TEST(ResultantSpeedsArcSamplesApi, ValuesEqualTheSameExplicitAngles) {
 
 TEST(ResultantSpeedsArcSamplesApi, DefaultAnswerIsUnchanged) {
   // rs-sample-up, byte for byte as the openapi.yaml example that predates arc_samples.
-  const JsonReply reply = post_ok(sample("up"));
+  const JsonReply reply = post_ok(kPath, sample("up"));
   ASSERT_EQ(reply.json.at("points").size(), 3u);
-  const json example = contract().document()["paths"][kPath]["post"]["responses"]["200"]["content"]
-                                            ["application/json"]["examples"]["sampleUp"]["value"];
+  const json example = test_support::project_contract()
+                           .document()["paths"][kPath]["post"]["responses"]["200"]["content"]
+                                      ["application/json"]["examples"]["sampleUp"]["value"];
   EXPECT_TRUE(compare_subset(example, reply.json, [](const std::string&, double want) {
                 return 1e-12 * std::abs(want);
               }).empty());
@@ -108,7 +94,7 @@ TEST(ResultantSpeedsArcSamplesApi, OutOfRangeOrWrongTypeNamesTheField) {
               422);
   }
   // 2.0 is the integer 2 (as faces 4.0 is 4).
-  EXPECT_EQ(post_ok(with_samples(sample(), 2.0)).json.at("points").size(), 2u);
+  EXPECT_EQ(post_ok(kPath, with_samples(sample(), 2.0)).json.at("points").size(), 2u);
 }
 
 TEST(ResultantSpeedsArcSamplesApi, BothAnglesAndSamplesAreACombinationError) {
@@ -128,9 +114,12 @@ TEST(ResultantSpeedsArcSamplesApi, BothAnglesAndSamplesAreACombinationError) {
 }
 
 TEST(ResultantSpeedsArcSamplesApi, RequestSchemaStatesTheRules) {
-  EXPECT_TRUE(contract().check_request("POST", kPath, with_samples(sample(), 361)).empty());
+  EXPECT_TRUE(test_support::project_contract()
+                  .check_request("POST", kPath, with_samples(sample(), 361))
+                  .empty());
   for (const json& bad : {json(1), json(362), json(2.5), json("5")}) {
-    const auto v = contract().check_request("POST", kPath, with_samples(sample(), bad));
+    const auto v =
+        test_support::project_contract().check_request("POST", kPath, with_samples(sample(), bad));
     bool names = false;
     for (const std::string& violation : v) {
       names = names || violation.rfind("at \"/arc_samples\"", 0) == 0;
@@ -139,7 +128,7 @@ TEST(ResultantSpeedsArcSamplesApi, RequestSchemaStatesTheRules) {
   }
   json both = with_samples(sample(), 5);
   both["contact_angles_deg"] = json::array({0});
-  const auto v = contract().check_request("POST", kPath, both);
+  const auto v = test_support::project_contract().check_request("POST", kPath, both);
   bool root = false;
   for (const std::string& violation : v) {
     root = root || violation.rfind("at \"\"", 0) == 0;

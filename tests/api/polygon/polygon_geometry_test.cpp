@@ -10,7 +10,7 @@
 #include <string>
 
 #include "api/polygon/polygon_hole_endpoint.h"
-#include "support/openapi_contract.h"
+#include "support/project_contract.h"
 #include "support/reference_compare.h"
 #include "support/sanity_checks.h"
 #include "support/test_server.h"
@@ -21,11 +21,6 @@ namespace {
 using nlohmann::json;
 
 const char* kPath = "/v1/polygon-hole/gcode";
-
-const test_support::OpenApiContract& contract() {
-  static const auto loaded = test_support::OpenApiContract::load(CUTCALC_OPENAPI_PATH);
-  return loaded;
-}
 
 // The paper's square a = 16 (square_a16_g95), one layer.
 json square(int faces = 4, double d = 16.0) {
@@ -39,16 +34,6 @@ json square(int faces = 4, double d = 16.0) {
 json with_geometry(json request, const json& flag = true) {
   request["include_geometry"] = flag;
   return request;
-}
-
-JsonReply post_ok(const json& request) {
-  const JsonReply reply = post(kPath, request.dump());
-  EXPECT_EQ(reply.status, 200) << reply.body.substr(0, 400);
-  for (const std::string& violation :
-       contract().check_response("post", kPath, reply.status, reply.content_type, reply.json)) {
-    ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
-  }
-  return reply;
 }
 
 std::string plain_program(const json& request) {
@@ -79,11 +64,11 @@ TEST(PolygonGeometryApi, GeometryComesOnlyWhenAskedAndChangesNothingElse) {
     if (c_axis) {
       request["synchronization"] = "c_axis";
     }
-    const JsonReply plain = post_ok(request);
+    const JsonReply plain = post_ok(kPath, request);
     EXPECT_FALSE(plain.json.contains("geometry"));
-    const JsonReply off = post_ok(with_geometry(request, false));
+    const JsonReply off = post_ok(kPath, with_geometry(request, false));
     EXPECT_EQ(off.body, plain.body);  // false is the default, byte for byte
-    JsonReply on = post_ok(with_geometry(request));
+    JsonReply on = post_ok(kPath, with_geometry(request));
     ASSERT_TRUE(on.json.contains("geometry"));
     on.json.erase("geometry");
     EXPECT_EQ(on.json, plain.json);
@@ -99,7 +84,7 @@ TEST(PolygonGeometryApi, PlainTextProgramIsUnchanged) {
 }
 
 TEST(PolygonGeometryApi, GeometryOfThePaperSquare) {
-  const JsonReply reply = post_ok(with_geometry(square()));
+  const JsonReply reply = post_ok(kPath, with_geometry(square()));
   const json& g = reply.json.at("geometry");
   // P1: a = 16, R_c = 8 sqrt 2; V_0 at the bottom right.
   ASSERT_EQ(g.at("polygon").size(), 4u);
@@ -133,7 +118,7 @@ TEST(PolygonGeometryApi, GeometryOfThePaperSquare) {
 TEST(PolygonGeometryApi, EveryFaceCountAnswersWithinTheContractAndBounds) {
   for (int faces = 3; faces <= 12; ++faces) {
     SCOPED_TRACE(::testing::Message() << faces << " faces");
-    const JsonReply reply = post_ok(with_geometry(square(faces, 20.0)));
+    const JsonReply reply = post_ok(kPath, with_geometry(square(faces, 20.0)));
     const json& g = reply.json.at("geometry");
     EXPECT_EQ(g.at("polygon").size(), static_cast<std::size_t>(faces));
     EXPECT_GE(g.at("rotor_positions").size(), 3u);
@@ -159,12 +144,15 @@ TEST(PolygonGeometryApi, WrongTypeNamesTheField) {
     EXPECT_EQ(
         expect_sane_answer(kPath, &api::polygon::handle_polygon_hole, with_geometry(square(), bad)),
         422);
-    const auto v = contract().check_request("POST", kPath, with_geometry(square(), bad));
+    const auto v =
+        test_support::project_contract().check_request("POST", kPath, with_geometry(square(), bad));
     EXPECT_TRUE(std::any_of(v.begin(), v.end(), [](const std::string& violation) {
       return violation.rfind("at \"/include_geometry\"", 0) == 0;
     }));
   }
-  EXPECT_TRUE(contract().check_request("POST", kPath, with_geometry(square())).empty());
+  EXPECT_TRUE(test_support::project_contract()
+                  .check_request("POST", kPath, with_geometry(square()))
+                  .empty());
   // Model errors are unchanged by the flag: a program of more than 200 000 arc blocks.
   json too_large = with_geometry(square());
   too_large["depth_mm"] = 1000;

@@ -1,0 +1,23 @@
+#pragma once
+// This repository's openapi.yaml as a contract checker, loaded once per test binary.
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "support/openapi_contract.h"
+#include "support/test_server.h"
+
+namespace cutcalc::test_support {
+
+const OpenApiContract& project_contract();
+
+}  // namespace cutcalc::test_support
+
+namespace cutcalc::testing {
+
+// POSTs `request` to the test server and expects a 200 whose answer matches openapi.yaml (a gtest
+// failure per violation).
+JsonReply post_ok(const std::string& path, const nlohmann::json& request);
+
+}  // namespace cutcalc::testing
