@@ -12,6 +12,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
+# shellcheck source=scripts/lib/start_cutcalc.sh
+source "$ROOT/scripts/lib/start_cutcalc.sh"
 TOOLS=$ROOT/tools/contract
 OPENAPI=$(realpath "${CONTRACT_OPENAPI:-$ROOT/openapi.yaml}")
 BIN=${CUTCALC_BIN:-$ROOT/build/release/service/cutcalc}
@@ -24,8 +26,8 @@ WORK=$(mktemp -d)
 PIDS=()
 cleanup() {
   local pid
-  for pid in "${PIDS[@]}"; do kill "$pid" 2>/dev/null || true; done
-  for pid in "${PIDS[@]}"; do wait "$pid" 2>/dev/null || true; done
+  for pid in "${PIDS[@]}" ${CUTCALC_PID:+"$CUTCALC_PID"}; do kill "$pid" 2>/dev/null || true; done
+  for pid in "${PIDS[@]}" ${CUTCALC_PID:+"$CUTCALC_PID"}; do wait "$pid" 2>/dev/null || true; done
   rm -rf "$WORK"
 }
 trap cleanup EXIT
@@ -63,23 +65,8 @@ echo "=== contract: spectral lint $(basename "$OPENAPI")"
   die "Spectral reports errors in $OPENAPI"
 
 # ---------------------------------------------------------------- cutcalc
-if [[ ! -x "$BIN" ]]; then
-  echo "=== contract: building cutcalc (release)"
-  cmake --preset release
-  cmake --build --preset release --target cutcalc -j 2
-  BIN=$ROOT/build/release/service/cutcalc
-fi
-"$BIN" --host 127.0.0.1 --port 0 --threads 2 --log-level info --log-format text >"$WORK/cutcalc.log" 2>&1 &
-CUTCALC_PID=$!
-PIDS+=("$CUTCALC_PID")
-CUTCALC_PORT=
-for _ in $(seq 1 200); do
-  CUTCALC_PORT=$(sed -n 's/.*listening on http:\/\/127\.0\.0\.1:\([0-9][0-9]*\).*/\1/p' "$WORK/cutcalc.log" | head -n 1)
-  [[ -n "$CUTCALC_PORT" ]] && break
-  kill -0 "$CUTCALC_PID" 2>/dev/null || { cat "$WORK/cutcalc.log" >&2; die "cutcalc exited at start"; }
-  sleep 0.1
-done
-[[ -n "$CUTCALC_PORT" ]] || { cat "$WORK/cutcalc.log" >&2; die "cutcalc did not report its port within 20 s"; }
+start_cutcalc "$BIN" "$WORK/cutcalc.log" contract
+BIN=$CUTCALC_BIN
 
 # ---------------------------------------------------------------- Prism proxies
 # Two free loopback ports (Prism reports its port only at log level info, which also logs every

@@ -14,6 +14,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
+# shellcheck source=scripts/lib/start_cutcalc.sh
+source "$ROOT/scripts/lib/start_cutcalc.sh"
 TOOLS=$ROOT/tools/e2e
 BIN=${CUTCALC_BIN:-$ROOT/build/release/service/cutcalc}
 CHROMIUM=${CHROMIUM_PATH:-/usr/bin/chromium}
@@ -61,22 +63,9 @@ echo "=== e2e: npm ci (tools/e2e; node $(node --version), npm $(npm --version 2>
 INSTALLED=$(date +%s)
 
 # ---------------------------------------------------------------- cutcalc
-if [[ ! -x "$BIN" ]]; then
-  echo "=== e2e: building cutcalc (release)"
-  cmake --preset release
-  cmake --build --preset release --target cutcalc -j 2
-  BIN=$ROOT/build/release/service/cutcalc
-fi
-"$BIN" --host 127.0.0.1 --port 0 --threads 2 --log-level info --log-format text >"$WORK/cutcalc.log" 2>&1 &
-CUTCALC_PID=$!
-PORT=
-for _ in $(seq 1 200); do
-  PORT=$(sed -n 's/.*listening on http:\/\/127\.0\.0\.1:\([0-9][0-9]*\).*/\1/p' "$WORK/cutcalc.log" | head -n 1)
-  [[ -n "$PORT" ]] && break
-  kill -0 "$CUTCALC_PID" 2>/dev/null || { cat "$WORK/cutcalc.log" >&2; die "cutcalc exited at start"; }
-  sleep 0.1
-done
-[[ -n "$PORT" ]] || { cat "$WORK/cutcalc.log" >&2; die "cutcalc did not report its port within 20 s"; }
+start_cutcalc "$BIN" "$WORK/cutcalc.log" e2e
+BIN=$CUTCALC_BIN
+PORT=$CUTCALC_PORT
 URL="http://127.0.0.1:$PORT"
 # shellcheck disable=SC2016 # JavaScript, not shell
 node -e '

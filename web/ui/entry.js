@@ -202,12 +202,9 @@ function geometryBounds(frame, radius) {
   return box;
 }
 
-function entryScheme(scheme, body, container) {
-  const frame = scheme.entry;
-  const radius = scheme.cutter_radius_mm;
-  const byName = positionsByName(frame);
-  const start = byName.start;
-  const saturation = byName.saturation;
+// The drawing area of one scheme: the geometry with room for a dimension row below it (and above
+// it with `withTopRow`), the feed arrow above, and the frame's axes hint at its origin.
+function schemeLayout(frame, radius, container, withTopRow) {
   const box = geometryBounds(frame, radius);
   const upp = unitsPerPixel(box.width * 1.12, container);
   const em = 12.5 * upp;
@@ -215,10 +212,25 @@ function entryScheme(scheme, body, container) {
   const topRow = box.minY - gap;
   const bottomRow = box.maxY + gap;
   const axisSize = 3 * em;
-  const feedAt = [box.minX, topRow - 2 * em];
+  const feedAt = [box.minX, (withTopRow ? topRow : box.minY) - 2 * em];
   box.add(box.minX, feedAt[1] - em).add(box.minX, bottomRow + 0.5 * em);
   box.add(feedAt[0] + axisSize * 1.6 + 4 * em, feedAt[1]);
   box.add(-axisSize - em, 0).add(0, -axisSize - em);
+  return { box, upp, topRow, bottomRow, axisSize, feedAt };
+}
+
+function entryScheme(scheme, body, container) {
+  const frame = scheme.entry;
+  const radius = scheme.cutter_radius_mm;
+  const byName = positionsByName(frame);
+  const start = byName.start;
+  const saturation = byName.saturation;
+  const { box, upp, topRow, bottomRow, axisSize, feedAt } = schemeLayout(
+    frame,
+    radius,
+    container,
+    true,
+  );
 
   const svg = diagram(
     'entry-scheme',
@@ -283,15 +295,7 @@ function exitScheme(scheme, body, container) {
   const frame = scheme.exit;
   const radius = scheme.cutter_radius_mm;
   const end = positionsByName(frame).end;
-  const box = geometryBounds(frame, radius);
-  const upp = unitsPerPixel(box.width * 1.12, container);
-  const em = 12.5 * upp;
-  const bottomRow = box.maxY + 2.6 * em;
-  const axisSize = 3 * em;
-  const feedAt = [box.minX, box.minY - 2 * em];
-  box.add(box.minX, feedAt[1] - em).add(box.minX, bottomRow + 0.5 * em);
-  box.add(feedAt[0] + axisSize * 1.6 + 4 * em, feedAt[1]);
-  box.add(-axisSize - em, 0).add(0, -axisSize - em);
+  const { box, upp, bottomRow, axisSize, feedAt } = schemeLayout(frame, radius, container, false);
 
   const svg = diagram(
     'exit-scheme',
