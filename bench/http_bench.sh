@@ -21,7 +21,7 @@
 #   --cutcalc   default build/release/service/cutcalc, started as
 #               cutcalc --host 127.0.0.1 --port P --threads N --log-level warn
 #   --echo      default build/release/bench/peers/httplib_echo
-#   --threads   cutcalc's and the echo's --threads (threads kept ready), default 8
+#   --threads   cutcalc's and the echo's --threads (event-loop threads), default the core count
 #   --strict    exit 3 if a goal fails
 #   --endpoints       also the per-endpoint table; --endpoints-only: only that table
 #   --endpoint-conns  connections for the per-endpoint table, default 64
@@ -36,7 +36,7 @@ CUTCALC_BIN="${CUTCALC_BIN:-$ROOT/build/release/service/cutcalc}"
 ECHO_BIN="${HTTPLIB_ECHO_BIN:-$ROOT/build/release/bench/peers/httplib_echo}"
 ROUNDS="${HTTP_BENCH_ROUNDS:-3}"
 DURATION="${HTTP_BENCH_DURATION:-5}"
-THREADS="${HTTP_BENCH_THREADS:-8}"
+THREADS="${HTTP_BENCH_THREADS:-$(nproc)}"
 CONNS="${HTTP_BENCH_CONNS:-1 8 64 256}"
 ENDPOINT_CONNS="${HTTP_BENCH_ENDPOINT_CONNS:-64}"
 REFERENCE="${CUTCALC_REFERENCE_DIR:-$ROOT/../shared/reference}"

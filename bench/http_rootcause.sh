@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Reproduces the measurements behind service/http_tuning.h, with bench/peers/httplib_echo in its
 # three modes (untuned = Debian's libcpp-httplib 0.11.4 with its compiled-in defaults; setters =
-# runtime setters + elastic pool, library's own connection loop; tuned = TunedServer as cutcalc):
+# runtime setters, the library's own connection loop and fixed pool; tuned = TunedServer, the
+# event-loop engine, as cutcalc):
 #   1. 43 ms per request on one keep-alive connection: Nagle + delayed ACK (two send()s per
 #      response); counted with nstat TcpExtDelayedACKs and strace.
 #   2. New connections stall while <threads> idle keep-alive connections are open (fixed pool).
 #   3. A burst of connects overflows the listen backlog of 5 (ListenOverflows, SYN retransmits).
 #   4. CPU burnt by idle keep-alive connections (library: 10 ms poll + 1 ms sleep loop).
-#   5. CPU per request at 64 connections: one blocking thread per connection vs event loops.
+#   5. CPU per request at 64 connections: the library's thread per connection vs event loops.
 # usage: bench/http_rootcause.sh [--echo PATH]   (default build/release/bench/peers/httplib_echo)
 # Loopback only; every run is bounded (3 s wrk runs, <= 300 connections); takes about 1 minute.
 set -euo pipefail
@@ -105,8 +106,8 @@ fi
 echo
 echo "## 2. A fresh request while 8 idle keep-alive connections are open"
 for variant in "untuned + TCP_NODELAY (fixed pool of max(8, cores-1)):--mode untuned --nodelay 1" \
-               "setters (elastic pool, library loop):--mode setters --threads 8" \
-               "tuned (TunedServer, event loops):--mode tuned --threads 8"; do
+               "setters (library loop and fixed pool):--mode setters" \
+               "tuned (TunedServer, event loops):--mode tuned"; do
   name="${variant%%:*}"
   read -r -a args <<<"${variant#*:}"
   start "${args[@]}"
@@ -118,9 +119,9 @@ echo "## 3. 256 connections at once (wrk -c256, 3 s)"
 echo "| server | listen backlog | req/s | p99 ms | max ms | errors | ListenOverflows | SYN retransmits |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|"
 for variant in "untuned + TCP_NODELAY:5:--mode untuned --nodelay 1" \
-               "setters, backlog kept at 5:5:--mode setters --threads 8 --backlog 5" \
-               "setters:1024:--mode setters --threads 8" \
-               "tuned:1024:--mode tuned --threads 8"; do
+               "setters, backlog kept at 5:5:--mode setters --backlog 5" \
+               "setters:1024:--mode setters" \
+               "tuned:1024:--mode tuned"; do
   IFS=: read -r name backlog argstr <<<"$variant"
   read -r -a args <<<"$argstr"
   start "${args[@]}"
@@ -135,9 +136,8 @@ done
 
 echo
 echo "## 4. Server CPU while 300 keep-alive connections sit idle (3 s)"
-for variant in "setters (library loop, one thread each):--mode setters --threads 8" \
-               "tuned, blocking mode (poll, one thread each):--mode tuned --threads 8 --event-loop 0" \
-               "tuned (event loops):--mode tuned --threads 8"; do
+for variant in "setters (library loop, one thread each):--mode setters" \
+               "tuned (event loops):--mode tuned"; do
   name="${variant%%:*}"
   read -r -a args <<<"${variant#*:}"
   start "${args[@]}"
@@ -160,9 +160,8 @@ echo "## 5. 64 busy keep-alive connections (wrk -c64, 3 s, 2 runs each)"
 echo "| server | req/s | p50 ms | p99 ms | server CPU per request (us) |"
 echo "|---|---:|---:|---:|---:|"
 for round in 1 2; do
-  for variant in "setters (library loop):--mode setters --threads 8" \
-                 "tuned, blocking mode:--mode tuned --threads 8 --event-loop 0" \
-                 "tuned (event loops):--mode tuned --threads 8"; do
+  for variant in "setters (library loop):--mode setters" \
+                 "tuned (event loops):--mode tuned"; do
     name="${variant%%:*}"
     read -r -a args <<<"${variant#*:}"
     start "${args[@]}"

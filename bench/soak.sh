@@ -12,7 +12,7 @@
 #                cutcalc --host 127.0.0.1 --port P --threads N --log-level warn
 #   --duration   seconds of load, default 1800 (30 min)
 #   --conns      wrk connections, default 64 (wrk runs 2 threads)
-#   --threads    cutcalc's --threads, default 8
+#   --threads    cutcalc's --threads (event-loop threads), default the core count
 #   --interval   RSS sampling period in seconds, default 10
 #   --reference  reference cases, default ../shared/reference beside the repo: every case that
 #                expects 200 becomes a request of the mix (the polygon endpoint once as JSON and
@@ -29,7 +29,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 CUTCALC_BIN="${CUTCALC_BIN:-$ROOT/build/release/service/cutcalc}"
 DURATION="${SOAK_DURATION:-1800}"
 CONNS="${SOAK_CONNS:-64}"
-THREADS="${SOAK_THREADS:-8}"
+THREADS="${SOAK_THREADS:-$(nproc)}"
 INTERVAL="${SOAK_INTERVAL:-10}"
 REFERENCE="${CUTCALC_REFERENCE_DIR:-$ROOT/../shared/reference}"
 STRICT=0

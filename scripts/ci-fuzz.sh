@@ -7,11 +7,18 @@
 # undocumented, body not JSON, NaN or infinity, a negative length, a response or accepted request
 # outside openapi.yaml, a malformed G-code program). Findings are kept in build/fuzz/run/artifacts.
 #
-# Time: 7 harnesses x CUTCALC_FUZZ_SECONDS (default 30) = about 3.7 minutes of fuzzing, plus the
-# build (about 2 minutes from scratch on two idle cores; incremental afterwards).
+# The eighth harness, http_engine_fuzzer, feeds raw bytes to the whole service over a socketpair
+# (fuzz/http_engine_fuzzer.cpp: framing, pipelining, every endpoint; its oracle checks that the
+# answers are well-framed HTTP/1.1, never more than the requests, problem+json for errors, and
+# that a fresh connection is still served). Its dictionary is fuzz/http.dict.
+#
+# Time: 7 harnesses x CUTCALC_FUZZ_SECONDS (default 30) + the engine harness for
+# CUTCALC_FUZZ_ENGINE_SECONDS (default 90) = 5 minutes of fuzzing, plus the build (about 3 minutes
+# from scratch on two idle cores; incremental afterwards).
 #
 # Environment:
-#   CUTCALC_FUZZ_SECONDS    seconds per harness (default 30)
+#   CUTCALC_FUZZ_SECONDS    seconds per request harness (default 30)
+#   CUTCALC_FUZZ_ENGINE_SECONDS  seconds for the HTTP engine harness (default 90)
 #   CUTCALC_FUZZ_RUNS       run each harness for this many inputs instead of a time (report runs)
 #   CUTCALC_FUZZ_TIMEOUT    seconds one input may take before it counts as a hang (default 30)
 #   CUTCALC_FUZZERS         space-separated harness names to run (default: all of them)
@@ -20,6 +27,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds=${CUTCALC_FUZZ_SECONDS:-30}
+engine_seconds=${CUTCALC_FUZZ_ENGINE_SECONDS:-90}
 runs=${CUTCALC_FUZZ_RUNS:-}
 # A hang detector, not a speed limit: the largest legal polygon program (8 MB, 0.13 s in the
 # release service) takes about 4 s here under ASan + UBSan + coverage with the oracle on a busy box.
@@ -29,7 +37,7 @@ build_dir=build/fuzz
 run_dir=$build_dir/run
 
 # --- dependencies (Debian 12): only the missing ones
-packages=(clang libclang-rt-14-dev cmake ninja-build pkg-config nlohmann-json3-dev libeigen3-dev
+packages=(clang libclang-rt-14-dev cmake ninja-build pkg-config nlohmann-json3-dev libeigen3-dev libcpp-httplib-dev
   libspdlog-dev libyaml-cpp-dev)
 missing=()
 for package in "${packages[@]}"; do
@@ -57,6 +65,7 @@ rm -rf "$run_dir/seeds" "$run_dir/artifacts" "$run_dir/logs"
 mkdir -p "$run_dir/seeds" "$run_dir/artifacts" "$run_dir/logs"
 "$build_dir/cutcalc_fuzz_seeds" "$reference_dir" "$run_dir/seeds"
 cat fuzz/cutcalc.dict "$run_dir/seeds/reference_keys.dict" >"$run_dir/cutcalc.dict"
+cat fuzz/http.dict "$run_dir/seeds/reference_keys.dict" >"$run_dir/http.dict"
 
 if [[ -n ${CUTCALC_FUZZERS:-} ]]; then
   read -r -a fuzzers <<<"$CUTCALC_FUZZERS"
@@ -64,11 +73,9 @@ else
   mapfile -t fuzzers <"$build_dir/fuzzers.txt"
 fi
 if [[ -n $runs ]]; then
-  limit=(-runs="$runs")
   echo "=== fuzz: ${#fuzzers[@]} harnesses, $runs inputs each"
 else
-  limit=(-max_total_time="$seconds")
-  echo "=== fuzz: ${#fuzzers[@]} harnesses, ${seconds} s each"
+  echo "=== fuzz: ${#fuzzers[@]} harnesses, ${seconds} s each (the HTTP engine ${engine_seconds} s)"
 fi
 
 fuzzer_pid=
@@ -95,10 +102,19 @@ for fuzzer in "${fuzzers[@]}"; do
     exit 1
   fi
   corpus=$build_dir/corpus/$fuzzer # kept between local runs; CI starts from the seeds
+  dict=$run_dir/cutcalc.dict
+  [[ $fuzzer == http_engine_fuzzer ]] && dict=$run_dir/http.dict
+  if [[ -n $runs ]]; then
+    limit=(-runs="$runs")
+  elif [[ $fuzzer == http_engine_fuzzer ]]; then
+    limit=(-max_total_time="$engine_seconds")
+  else
+    limit=(-max_total_time="$seconds")
+  fi
   log=$run_dir/logs/$fuzzer.log
   mkdir -p "$corpus"
   started=$SECONDS
-  "$build_dir/$fuzzer" "$corpus" "$run_dir/seeds/$seeds" -dict="$run_dir/cutcalc.dict" \
+  "$build_dir/$fuzzer" "$corpus" "$run_dir/seeds/$seeds" -dict="$dict" \
     "${limit[@]}" -timeout="$timeout" -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
     -artifact_prefix="$run_dir/artifacts/$fuzzer-" >"$log" 2>&1 &
   fuzzer_pid=$!

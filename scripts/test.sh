@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Sets up, then builds and runs every test twice: an optimised release build, and a Debug build
-# with AddressSanitizer + UndefinedBehaviorSanitizer. Any warning fails the build (-Werror); any
+# with AddressSanitizer + UndefinedBehaviorSanitizer; then the service's tests (HTTP engine,
+# framing, abuse, shutdown) a third time under ThreadSanitizer (the tsan preset). Any warning fails the build (-Werror); any
 # test failure or sanitizer report fails the run. Then the fuzzers, the OpenAPI contract replay, the
 # container and the Kubernetes manifests (each script says what it proves).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 
-for preset in release dev; do
+for preset in release dev tsan; do
   echo "=== ${preset}: configure and build"
   cmake --preset "$preset"
   cmake --build --preset "$preset"

@@ -44,14 +44,11 @@ std::string apply(Config& config, std::string_view flag, const std::string& valu
     }
     config.port = static_cast<int>(*port);
   } else if (flag == "--threads") {
-    const auto threads = parse_long(value, 1, 4096);
+    const auto threads = parse_long(value, 1, 256);
     if (!threads) {
-      return "--threads must be an integer 1..4096, got '" + value + "'";
+      return "--threads must be an integer 1..256, got '" + value + "'";
     }
-    config.http.worker_threads = static_cast<std::size_t>(*threads);
-    if (config.http.max_worker_threads < config.http.worker_threads) {
-      config.http.max_worker_threads = config.http.worker_threads;
-    }
+    config.http.event_loop_threads = static_cast<std::size_t>(*threads);
   } else if (flag == "--log-level") {
     constexpr std::array levels = {"trace", "debug", "info", "warn", "error", "critical", "off"};
     for (const char* level : levels) {
@@ -92,8 +89,8 @@ std::string usage() {
          "               [--cors-origin ORIGIN ...]\n"
          "  --host H        address to listen on (default 127.0.0.1; env CUTCALC_HOST)\n"
          "  --port P        TCP port, 0 = any free port (default 8080; env CUTCALC_PORT)\n"
-         "  --threads N     worker threads kept ready (default: from the core count;\n"
-         "                  env CUTCALC_THREADS); more are started on demand up to a cap\n"
+         "  --threads N     event-loop threads serving connections and requests\n"
+         "                  (default: one per core; env CUTCALC_THREADS)\n"
          "  --log-level L   trace|debug|info|warn|error|critical|off (default info;\n"
          "                  env CUTCALC_LOG_LEVEL)\n"
          "  --log-format F  text|json (default text; env CUTCALC_LOG_FORMAT)\n"

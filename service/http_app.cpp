@@ -1,5 +1,6 @@
 #include "service/http_app.h"
 
+#include <cctype>
 #include <chrono>
 #include <exception>
 #include <string>
@@ -43,9 +44,32 @@ void write(httplib::Response& res, const api::ApiResponse& response) {
   res.set_content(response.body, response.content_type.c_str());
 }
 
+// The problem's `instance` of a request: the path of its target
+// (percent-encoded where it is not a plain URI character), or "/" when none could be read.
+std::string problem_instance(std::string_view target) {
+  target = target.substr(0, target.find_first_of("?#"));
+  if (target.empty() || target.front() != '/') return "/";
+  std::string instance;
+  for (const char c : target) {
+    const bool plain = std::isalnum(static_cast<unsigned char>(c)) != 0 ||
+                       std::string_view("-._~!$&'()*+,;=:@/%").find(c) != std::string_view::npos;
+    if (plain) {
+      instance += c;
+    } else {
+      constexpr char kHex[] = "0123456789ABCDEF";
+      const auto byte = static_cast<unsigned char>(c);
+      instance += '%';
+      instance += kHex[byte >> 4U];
+      instance += kHex[byte & 0xFU];
+    }
+  }
+  return instance;
+}
+
 void write_problem(const httplib::Request& req, httplib::Response& res,
                    const api::Problem& problem) {
-  write(res, api::problem_response(problem, req.path, res.get_header_value(kRequestIdHeader)));
+  write(res, api::problem_response(problem, problem_instance(req.path),
+                                   res.get_header_value(kRequestIdHeader)));
 }
 
 // Problems for statuses the HTTP library sets by itself, before any handler runs.
@@ -69,9 +93,9 @@ void reply_json(httplib::Response& res, const nlohmann::json& body) {
 
 HttpApp::HttpApp(Config config)
     : config_(std::move(config)),
-      server_(std::make_unique<TunedServer>()),
+      server_(std::make_unique<TunedServer>(
+          config_.http, [this](const EngineError& error) { return engine_error_response(error); })),
       cors_(config_.cors_origins) {
-  apply_http_tuning(*server_, config_.http);
   install_middleware();
   install_routes();
 }
@@ -96,6 +120,25 @@ bool HttpApp::serve() {
 void HttpApp::shutdown() {
   draining_.store(true);
   server_->stop();
+}
+
+void HttpApp::serve_connection(int sock) { server_->adopt_connection(sock); }
+
+std::string HttpApp::engine_error_response(const EngineError& error) {
+  const api::ProblemKind kind = error.status == 413   ? api::ProblemKind::payload_too_large
+                                : error.status == 503 ? api::ProblemKind::unavailable
+                                                      : api::ProblemKind::bad_request;
+  const std::string request_id = generate_request_id();
+  const std::string instance = problem_instance(error.target);
+  const api::ApiResponse problem =
+      api::problem_response({kind, std::string(error.detail), {}}, instance, request_id);
+  metrics_.observe("unmatched", error.method, problem.status, 0.0);
+  if (access_log_enabled()) {
+    log_access(
+        {error.method.empty() ? "-" : error.method, instance, problem.status, 0.0, request_id, {}});
+  }
+  return closing_response(problem.status, problem.content_type, problem.body,
+                          {{kRequestIdHeader, request_id}, {kNoSniffHeader, "nosniff"}});
 }
 
 void HttpApp::install_middleware() {
@@ -223,7 +266,9 @@ void HttpApp::install_routes() {
 
   routes_.add("/metrics", "GET, HEAD");
   server_->Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
-    res.set_content(metrics_.render(), "text/plain; version=0.0.4; charset=utf-8");
+    res.set_content(metrics_.render() +
+                        render_connection_metrics(server_->counters(), server_->open_connections()),
+                    "text/plain; version=0.0.4; charset=utf-8");
   });
 
   routes_.add("/openapi.yaml", "GET, HEAD");

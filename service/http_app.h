@@ -26,14 +26,19 @@ class HttpApp {
   bool serve();
   // Thread-safe: readiness turns 503, the listener closes, in-flight requests finish.
   void shutdown();
+  // Serves a connected stream socket as if it had been accepted (takes ownership); for the
+  // byte-level fuzzer, which talks to the engine over a socketpair.
+  void serve_connection(int sock);
 
  private:
+  // The response for an error the engine answers by itself (framing, size, connection cap).
+  std::string engine_error_response(const EngineError& error);
   void install_middleware();
   void install_routes();
 
   Config config_;
-  std::unique_ptr<TunedServer> server_;
   Metrics metrics_;
+  std::unique_ptr<TunedServer> server_;
   RouteTable routes_;
   CorsPolicy cors_;
   std::atomic<bool> draining_{false};

@@ -10,11 +10,14 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cstring>
 #include <mutex>
 #include <system_error>
 #include <thread>
 #include <unordered_map>
 #include <utility>
+
+#include "service/unique_fd.h"
 
 namespace cutcalc::service {
 namespace {
@@ -22,53 +25,84 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
-// Deadlines (keep-alive, request) and server stop are checked this often.
+// Deadlines and server stop are checked this often.
 constexpr milliseconds kSweepInterval{200};
+// After a connection's last response: how long its unread input is read and dropped, so that the
+// close does not reset the connection before the client has read the response (RFC 9112 9.6).
+constexpr milliseconds kLingerTime{1000};
+// Pipelined requests are served until this much of their responses waits for the socket.
+constexpr std::size_t kOutputHighWater = 256 * 1024;
+// Buffers of an idle connection above this size are given back.
+constexpr std::size_t kIdleBufferBytes = 16 * 1024;
+constexpr std::size_t kReadChunk = 16 * 1024;
+constexpr char kContinue[] = "HTTP/1.1 100 Continue\r\n\r\n";
 
-constexpr char kServiceUnavailable[] =
-    "HTTP/1.1 503 Service Unavailable\r\nConnection: close\r\nContent-Length: 0\r\n\r\n";
+// Counts a connection as open from its first member's construction to its last member's
+// destruction, so that drain() sees it closed only once its descriptor is.
+class OpenCount {
+ public:
+  explicit OpenCount(std::atomic<std::size_t>& count) : count_(count) { count_.fetch_add(1); }
+  OpenCount(const OpenCount&) = delete;
+  OpenCount& operator=(const OpenCount&) = delete;
+  ~OpenCount() { count_.fetch_sub(1); }
+
+ private:
+  std::atomic<std::size_t>& count_;
+};
 
 }  // namespace
 
 struct EventLoopEngine::Connection {
-  Connection(int sock, const EventLoopSettings& settings, std::atomic<std::size_t>& open)
-      : fd(sock),
-        stream(sock, settings.read_timeout, settings.write_timeout),
-        requests_left(std::max<std::size_t>(settings.keep_alive_max_requests, 1)),
-        open_connections(open) {
-    open_connections.fetch_add(1);
-  }
-  Connection(const Connection&) = delete;
-  Connection& operator=(const Connection&) = delete;
-  ~Connection() {
-    ::shutdown(fd, SHUT_RDWR);
-    ::close(fd);
-    open_connections.fetch_sub(1);
-  }
+  Connection(UniqueFd socket, std::size_t requests, std::atomic<std::size_t>& open)
+      : counted(open), fd(std::move(socket)), addresses(fd.get()), requests_left(requests) {}
 
-  int fd;
-  ConnectionStream stream;
+  [[nodiscard]] std::string_view unread() const {
+    return std::string_view(input).substr(input_offset);
+  }
+  void consume(std::size_t bytes) {
+    input_offset += bytes;
+    if (input_offset == input.size()) {
+      input.clear();
+      input_offset = 0;
+    }
+  }
+  [[nodiscard]] bool has_output() const { return output_offset < output.size(); }
+  [[nodiscard]] std::size_t pending_output() const { return output.size() - output_offset; }
+
+  OpenCount counted;  // first: released last
+  UniqueFd fd;
+  SocketAddresses addresses;
+  std::string input;  // bytes read; [input_offset, size) not yet consumed
+  std::size_t input_offset = 0;
+  std::string output;  // responses; [output_offset, size) not yet sent
+  std::size_t output_offset = 0;
+  std::string scratch;  // a request rewritten for the library (library_request())
   std::size_t requests_left;
-  std::size_t loop = 0;
-  std::atomic<std::size_t>& open_connections;  // the engine's count, for drain()
-  bool in_request = false;                     // some bytes of the next request are buffered
-  bool close_after_flush = false;              // the response being flushed is the last one
-  Clock::time_point deadline{};                // of the request in progress, or of the idle wait
+
+  bool peer_eof = false;       // the client will send nothing more
+  bool last_response = false;  // close once the output is sent
+  bool lingering = false;      // last response sent, SHUT_WR done; dropping input until EOF
+  bool in_request = false;     // part of a request is buffered (request deadline runs)
+  bool continue_sent = false;  // 100 Continue sent for the request being received
+  std::uint32_t events = 0;    // the epoll interest registered
+  Clock::time_point request_deadline{};  // of the request being received
+  Clock::time_point deadline{};          // of whatever the connection waits for now
 };
 
 class EventLoopEngine::Loop {
  public:
-  Loop(EventLoopEngine& engine) : engine_(engine) {
-    epoll_fd_ = ::epoll_create1(EPOLL_CLOEXEC);
-    wake_fd_ = ::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
-    if (epoll_fd_ < 0 || wake_fd_ < 0) {
-      close_fds();
+  explicit Loop(EventLoopEngine& engine) : engine_(engine) {
+    epoll_fd_.reset(::epoll_create1(EPOLL_CLOEXEC));
+    wake_fd_.reset(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK));
+    if (!epoll_fd_.valid() || !wake_fd_.valid()) {
       throw std::system_error(errno, std::generic_category(), "event loop");
     }
     epoll_event event{};
     event.events = EPOLLIN;
-    event.data.ptr = nullptr;  // the wake-up eventfd
-    ::epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, wake_fd_, &event);
+    event.data.fd = wake_fd_.get();
+    if (::epoll_ctl(epoll_fd_.get(), EPOLL_CTL_ADD, wake_fd_.get(), &event) != 0) {
+      throw std::system_error(errno, std::generic_category(), "event loop wake-up");
+    }
     thread_ = std::thread([this] { run(); });
   }
   Loop(const Loop&) = delete;
@@ -80,15 +114,14 @@ class EventLoopEngine::Loop {
     }
     wake();
     thread_.join();
-    close_fds();
   }
 
-  // From any thread: the loop takes the connection over (and serves what it has buffered).
-  void post(std::shared_ptr<Connection> connection) {
+  // From any thread: the loop takes the connection over.
+  void post(std::unique_ptr<Connection> connection) {
     bool was_empty = false;
     {
       const std::lock_guard lock(inbox_mutex_);
-      if (quit_) return;  // dropping it closes it
+      if (quit_) return;  // destroyed here: closed
       was_empty = inbox_.empty();
       inbox_.push_back(std::move(connection));
     }
@@ -98,12 +131,7 @@ class EventLoopEngine::Loop {
  private:
   void wake() {
     const std::uint64_t one = 1;
-    [[maybe_unused]] const auto n = ::write(wake_fd_, &one, sizeof(one));
-  }
-
-  void close_fds() {
-    if (wake_fd_ >= 0) ::close(wake_fd_);
-    if (epoll_fd_ >= 0) ::close(epoll_fd_);
+    [[maybe_unused]] const auto n = ::write(wake_fd_.get(), &one, sizeof(one));
   }
 
   void run() {
@@ -112,22 +140,27 @@ class EventLoopEngine::Loop {
     for (;;) {
       const auto wait = std::chrono::duration_cast<milliseconds>(next_sweep - Clock::now());
       const int n =
-          ::epoll_wait(epoll_fd_, events.data(), static_cast<int>(events.size()),
+          ::epoll_wait(epoll_fd_.get(), events.data(), static_cast<int>(events.size()),
                        static_cast<int>(std::clamp<milliseconds::rep>(wait.count(), 0, 1000)));
-      for (int i = 0; i < n; ++i) {
-        auto* connection = static_cast<Connection*>(events[static_cast<std::size_t>(i)].data.ptr);
-        if (connection == nullptr) {
-          if (!take_inbox()) return finish();
+      bool woken = false;
+      for (int i = 0; i < std::max(n, 0); ++i) {
+        const epoll_event& event = events[static_cast<std::size_t>(i)];
+        if (event.data.fd == wake_fd_.get()) {
+          woken = true;
           continue;
         }
+        const int fd = event.data.fd;
+        const auto it = table_.find(fd);
+        if (it == table_.end()) continue;  // closed earlier in this batch
         try {
-          on_readable(connection);
+          on_event(*it->second, event.events);
         } catch (...) {  // e.g. bad_alloc: lose this connection, not the loop
-          drop(connection);
+          close(fd);
         }
       }
+      if (woken && !take_inbox()) return close_all();
       const auto now = Clock::now();
-      if (now >= next_sweep || (engine_.stopping_() && !connections_.empty())) {
+      if (now >= next_sweep || (engine_.stopping_() && !table_.empty())) {
         sweep(now);
         next_sweep = now + kSweepInterval;
       }
@@ -137,265 +170,327 @@ class EventLoopEngine::Loop {
   // False when the loop is to quit.
   bool take_inbox() {
     std::uint64_t count = 0;
-    [[maybe_unused]] const auto n = ::read(wake_fd_, &count, sizeof(count));
-    std::vector<std::shared_ptr<Connection>> arrived;
+    [[maybe_unused]] const auto n = ::read(wake_fd_.get(), &count, sizeof(count));
+    std::vector<std::unique_ptr<Connection>> arrived;
     {
       const std::lock_guard lock(inbox_mutex_);
       if (quit_) return false;
       arrived.swap(inbox_);
     }
-    for (auto& connection : arrived) {
-      // Also while stopping: the connection may carry a request in flight; the sweep closes it
-      // if it is idle.
-      epoll_event event{};
-      event.events = EPOLLIN | EPOLLRDHUP;
-      event.data.ptr = connection.get();
-      if (::epoll_ctl(epoll_fd_, EPOLL_CTL_ADD, connection->fd, &event) != 0) continue;
-      Connection* raw = connection.get();
-      connections_.emplace(raw, std::move(connection));
-      if (raw->stream.has_buffered_input()) after_input(raw, false);
+    for (auto& owned : arrived) {
+      const int fd = owned->fd.get();
+      Connection& connection = *owned;
+      table_.emplace(fd, std::move(owned));
+      connection.deadline = Clock::now() + engine_.settings_.keep_alive_timeout;
+      if (!watch(connection, EPOLLIN, EPOLL_CTL_ADD)) close(fd);
     }
     return true;
   }
 
-  void finish() {
-    connections_.clear();
+  void close_all() {
+    while (!table_.empty()) close(table_.begin()->first);
     const std::lock_guard lock(inbox_mutex_);
     inbox_.clear();
   }
 
-  void on_readable(Connection* connection) {
-    const std::size_t limit = kMaxBufferedHead + engine_.settings_.max_body_bytes;
-    switch (connection->stream.fill_nonblocking(limit)) {
-      case ConnectionStream::Fill::data:
-        after_input(connection, false);
-        return;
-      case ConnectionStream::Fill::full:
-        after_input(connection, false, true);
-        return;
-      case ConnectionStream::Fill::eof:
-        after_input(connection, true);
-        return;
-      case ConnectionStream::Fill::again:
-        return;
-      case ConnectionStream::Fill::error:
-        drop(connection);
-        return;
+  // Sets the epoll interest; false when epoll refused (the caller closes the connection).
+  bool watch(Connection& connection, std::uint32_t events, int operation = EPOLL_CTL_MOD) {
+    if (operation == EPOLL_CTL_MOD && connection.events == events) return true;
+    epoll_event event{};
+    event.events = events;
+    event.data.fd = connection.fd.get();
+    if (::epoll_ctl(epoll_fd_.get(), operation, connection.fd.get(), &event) != 0) {
+      engine_.counters_.epoll_failures.fetch_add(1, std::memory_order_relaxed);
+      return false;
     }
+    connection.events = events;
+    return true;
   }
 
-  void after_input(Connection* connection, bool eof, bool buffer_full = false) {
-    const auto now = Clock::now();
-    auto outcome = engine_.serve_nonblocking(*connection);
-    // Cannot happen (the buffer holds any head + body the fast path accepts), but never spin on
-    // a full buffer: let a blocking thread read on.
-    if (outcome == Outcome::wait_input && buffer_full) outcome = Outcome::to_thread;
-    switch (outcome) {
-      case Outcome::idle:
-        if (eof) return drop(connection);
-        connection->in_request = false;
-        connection->deadline = now + engine_.settings_.keep_alive_timeout;
-        connection->stream.release_idle_buffers();
-        return;
-      case Outcome::wait_input:
-        if (eof) return drop(connection);  // closed in the middle of a request
-        if (!connection->in_request) {
-          connection->in_request = true;
-          connection->deadline = engine_.settings_.request_timeout.count() > 0
-                                     ? now + engine_.settings_.request_timeout
-                                     : Clock::time_point::max();
-        }
-        return;
-      case Outcome::to_thread: {
-        if (!connection->in_request) {
-          connection->in_request = true;
-          connection->deadline = engine_.settings_.request_timeout.count() > 0
-                                     ? now + engine_.settings_.request_timeout
-                                     : Clock::time_point::max();
-        }
-        ::epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, connection->fd, nullptr);
-        const auto it = connections_.find(connection);
-        auto owned = std::move(it->second);
-        connections_.erase(it);
-        engine_.hand_to_thread(std::move(owned));
-        return;
+  // The only way a connection ends: out of epoll, out of the table, destroyed (fd closed).
+  void close(int fd) {
+    const auto it = table_.find(fd);
+    if (it == table_.end()) return;
+    // Out of epoll before the descriptor can be closed and its number reused. (It fails only if
+    // the descriptor is not registered, which the table rules out; counted, never ignored.)
+    if (it->second->events != 0 && ::epoll_ctl(epoll_fd_.get(), EPOLL_CTL_DEL, fd, nullptr) != 0) {
+      engine_.counters_.epoll_failures.fetch_add(1, std::memory_order_relaxed);
+    }
+    std::unique_ptr<Connection> owned = std::move(it->second);
+    table_.erase(it);
+    owned.reset();
+  }
+
+  enum class Read { data, again, eof, error };
+
+  // Reads what the socket has, up to the framing's buffer limit.
+  Read read_input(Connection& connection) {
+    const std::size_t limit = engine_.settings_.framing.max_buffered_bytes();
+    if (connection.input_offset > 0) {  // compact: keep only unread bytes
+      connection.input.erase(0, connection.input_offset);
+      connection.input_offset = 0;
+    }
+    for (;;) {
+      const std::size_t unread = connection.input.size();
+      if (unread >= limit) return Read::data;  // framing rejects before this; never spin
+      const std::size_t room = std::min(kReadChunk, limit - unread);
+      connection.input.resize(unread + room);
+      const ssize_t n =
+          ::recv(connection.fd.get(), connection.input.data() + unread, room, MSG_DONTWAIT);
+      connection.input.resize(unread + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
+      if (n > 0) {
+        if (static_cast<std::size_t>(n) < room) return Read::data;
+        continue;  // there may be more
       }
-      case Outcome::close:
-        return drop(connection);
+      if (n == 0) return Read::eof;
+      if (errno == EINTR) continue;
+      if (errno == EAGAIN || errno == EWOULDBLOCK) {
+        return connection.input.size() > unread ? Read::data : Read::again;
+      }
+      return Read::error;
     }
   }
 
-  void drop(Connection* connection) { connections_.erase(connection); }  // closes it
+  void on_event(Connection& connection, std::uint32_t events) {
+    const int fd = connection.fd.get();
+    if (connection.lingering) {
+      const bool done = drop_input(connection);
+      if (done) close(fd);
+      return;
+    }
+    if ((events & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0 && !connection.has_output() &&
+        !connection.last_response && !connection.peer_eof) {
+      switch (read_input(connection)) {
+        case Read::data:
+        case Read::again:
+          break;
+        case Read::eof:
+          connection.peer_eof = true;
+          break;
+        case Read::error:
+          return close(fd);
+      }
+    }
+    advance(connection);
+  }
+
+  // Serves what is buffered, sends what the socket takes, and sets what to wait for next.
+  void advance(Connection& connection) {
+    const int fd = connection.fd.get();
+    for (;;) {
+      const bool more = serve_buffered(connection);
+      switch (flush(connection)) {
+        case Flush::error:
+          return close(fd);
+        case Flush::again:
+          if (!watch(connection, EPOLLOUT)) return close(fd);
+          connection.deadline = Clock::now() + engine_.settings_.write_timeout;
+          return;
+        case Flush::done:
+          break;
+      }
+      if (!more) break;  // else serving stopped at the high-water mark: serve on
+    }
+    const auto now = Clock::now();
+    if (connection.last_response) return linger(connection, now);
+    if (connection.peer_eof) return close(fd);  // a partial request can never complete
+    if (connection.in_request) {
+      connection.deadline = connection.request_deadline;
+    } else {
+      if (engine_.stopping_()) return close(fd);
+      connection.deadline = now + engine_.settings_.keep_alive_timeout;
+      if (connection.input.capacity() > kIdleBufferBytes) std::string().swap(connection.input);
+      if (connection.output.capacity() > kIdleBufferBytes) std::string().swap(connection.output);
+    }
+    if (!watch(connection, EPOLLIN)) close(fd);
+  }
+
+  // True when it stopped at the output high-water mark with input left to serve.
+  bool serve_buffered(Connection& connection) {
+    const EventLoopSettings& settings = engine_.settings_;
+    while (!connection.last_response && !connection.unread().empty()) {
+      if (connection.pending_output() >= kOutputHighWater) return true;
+      const std::string_view unread = connection.unread();
+      const RequestFrame frame = classify_request(unread, settings.framing);
+      if (frame.verdict == RequestFrame::Verdict::incomplete) {
+        if (unread.size() >= settings.framing.max_buffered_bytes()) {  // cannot happen: framing
+          reject(connection, {400, "the request is over the size limit", {}, {}});
+          return false;
+        }
+        start_request(connection);
+        if (frame.expects_continue && frame.head_bytes > 0 && !connection.continue_sent) {
+          connection.output.append(kContinue, sizeof(kContinue) - 1);
+          connection.continue_sent = true;
+        }
+        return false;
+      }
+      if (frame.verdict == RequestFrame::Verdict::reject) {
+        reject(connection, {frame.status, frame.reason, frame.method, frame.target});
+        return false;
+      }
+      const bool close_connection = connection.requests_left <= 1 || engine_.stopping_();
+      bool connection_closed = false;
+      bool ok = false;
+      {
+        ConnectionStream stream(library_request(unread, frame, connection.scratch),
+                                connection.output, connection.addresses);
+        try {
+          ok = engine_.serve_(stream, close_connection, connection_closed);
+        } catch (...) {  // the library catches handler exceptions; anything else ends the line
+          ok = false;
+        }
+      }
+      connection.consume(frame.wire_bytes);
+      connection.in_request = false;
+      connection.continue_sent = false;
+      if (connection.requests_left > 1) --connection.requests_left;
+      engine_.counters_.requests.fetch_add(1, std::memory_order_relaxed);
+      if (!ok || connection_closed || close_connection) connection.last_response = true;
+    }
+    return false;
+  }
+
+  void start_request(Connection& connection) {
+    if (connection.in_request) return;
+    connection.in_request = true;
+    const auto timeout = engine_.settings_.request_timeout;
+    connection.request_deadline =
+        timeout.count() > 0 ? Clock::now() + timeout : Clock::time_point::max();
+  }
+
+  // An error answered by the engine; nothing after it on this connection is read as a request.
+  void reject(Connection& connection, const EngineError& error) {
+    engine_.counters_.rejected_requests.fetch_add(1, std::memory_order_relaxed);
+    connection.output += engine_.render_error_(error);
+    connection.last_response = true;
+    connection.in_request = false;
+    connection.input.clear();
+    connection.input_offset = 0;
+  }
+
+  enum class Flush { done, again, error };
+
+  Flush flush(Connection& connection) {
+    while (connection.has_output()) {
+      const ssize_t n =
+          ::send(connection.fd.get(), connection.output.data() + connection.output_offset,
+                 connection.pending_output(), MSG_NOSIGNAL | MSG_DONTWAIT);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        return errno == EAGAIN || errno == EWOULDBLOCK ? Flush::again : Flush::error;
+      }
+      connection.output_offset += static_cast<std::size_t>(n);
+    }
+    connection.output.clear();
+    connection.output_offset = 0;
+    return Flush::done;
+  }
+
+  // The last response is out: no more writing; read and drop what the client still sends, until
+  // it closes or kLingerTime passes.
+  void linger(Connection& connection, Clock::time_point now) {
+    const int fd = connection.fd.get();
+    if (connection.peer_eof || engine_.stopping_()) return close(fd);
+    ::shutdown(fd, SHUT_WR);
+    connection.lingering = true;
+    connection.in_request = false;
+    connection.deadline = now + kLingerTime;
+    if (!watch(connection, EPOLLIN)) close(fd);
+  }
+
+  // True when the connection is done (EOF or error).
+  bool drop_input(Connection& connection) {
+    std::array<char, 4096> sink{};
+    for (;;) {
+      const ssize_t n = ::recv(connection.fd.get(), sink.data(), sink.size(), MSG_DONTWAIT);
+      if (n > 0) continue;
+      if (n < 0 && errno == EINTR) continue;
+      return !(n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK));
+    }
+  }
 
   void sweep(Clock::time_point now) {
     const bool stopping = engine_.stopping_();
-    for (auto it = connections_.begin(); it != connections_.end();) {
-      Connection& connection = *it->second;
-      // Stopping closes idle connections; a request in flight keeps its connection until it
-      // is answered (the response then says Connection: close) or its deadline passes.
-      if ((stopping && !connection.in_request) || now >= connection.deadline) {
-        if (connection.in_request) {
+    std::vector<int> expired;
+    for (const auto& [fd, connection] : table_) {
+      const bool idle = !connection->in_request && !connection->has_output();
+      // Stopping closes idle and lingering connections; a request in flight keeps its connection
+      // until it is answered (the response then says Connection: close) or its deadline passes.
+      if ((stopping && (idle || connection->lingering)) || now >= connection->deadline) {
+        if (connection->in_request) {
           engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
         }
-        it = connections_.erase(it);
-      } else {
-        ++it;
+        expired.push_back(fd);
       }
     }
+    for (const int fd : expired) close(fd);
   }
 
   EventLoopEngine& engine_;
-  int epoll_fd_ = -1;
-  int wake_fd_ = -1;
+  UniqueFd epoll_fd_;
+  UniqueFd wake_fd_;
   std::mutex inbox_mutex_;
-  std::vector<std::shared_ptr<Connection>> inbox_;
-  bool quit_ = false;  // guarded by inbox_mutex_
-  std::unordered_map<Connection*, std::shared_ptr<Connection>> connections_;  // loop thread only
+  std::vector<std::unique_ptr<Connection>> inbox_;              // guarded by inbox_mutex_
+  bool quit_ = false;                                           // guarded by inbox_mutex_
+  std::unordered_map<int, std::unique_ptr<Connection>> table_;  // loop thread only
   std::thread thread_;
 };
 
-EventLoopEngine::EventLoopEngine(EventLoopSettings settings, ServeRequest serve, Stopping stopping,
-                                 ConnectionCounters& counters, std::shared_ptr<PoolLoad> load)
+EventLoopEngine::EventLoopEngine(EventLoopSettings settings, ServeRequest serve,
+                                 RenderError render_error, Stopping stopping,
+                                 ConnectionCounters& counters)
     : settings_(std::move(settings)),
       serve_(std::move(serve)),
+      render_error_(std::move(render_error)),
       stopping_(std::move(stopping)),
-      counters_(counters),
-      pool_(std::make_unique<ElasticThreadPool>(settings_.blocking_threads, std::move(load))) {
+      counters_(counters) {
   const std::size_t loops = std::max<std::size_t>(settings_.loops, 1);
   for (std::size_t i = 0; i < loops; ++i) loops_.push_back(std::make_unique<Loop>(*this));
 }
 
-bool EventLoopEngine::drain(std::chrono::milliseconds limit) {
+EventLoopEngine::~EventLoopEngine() { loops_.clear(); }
+
+bool EventLoopEngine::drain(std::chrono::milliseconds limit) const {
   const auto until = Clock::now() + limit;
   while (open_connections_.load() > 0) {
-    if (Clock::now() >= until) {
-      return false;
-    }
+    if (Clock::now() >= until) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   return true;
 }
 
-EventLoopEngine::~EventLoopEngine() {
-  pool_->shutdown();  // blocking work finishes first; it may still park connections on the loops
-  loops_.clear();
-}
-
 void EventLoopEngine::adopt(int sock) {
+  UniqueFd fd(sock);
   counters_.connections.fetch_add(1, std::memory_order_relaxed);
-  if (settings_.tcp_nodelay) {
-    const int on = 1;
-    ::setsockopt(sock, IPPROTO_TCP, TCP_NODELAY, &on, sizeof(on));
-  }
-  std::shared_ptr<Connection> connection;
-  try {
-    connection = std::make_shared<Connection>(sock, settings_, open_connections_);
-  } catch (...) {
-    ::close(sock);
+  if (open_connections_.load() >= settings_.max_connections) {
+    // At the cap: refuse at once rather than hold another descriptor. Whatever request the client
+    // has sent is read first (if it is already here), so the close is less likely to reset it.
+    counters_.rejected_at_cap.fetch_add(1, std::memory_order_relaxed);
+    std::array<char, 4096> sink{};
+    while (::recv(fd.get(), sink.data(), sink.size(), MSG_DONTWAIT) > 0) {
+    }
+    const std::string response =
+        render_error_({503, "the server is at its connection limit; retry later", {}, {}});
+    [[maybe_unused]] const auto n =
+        ::send(fd.get(), response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+    ::shutdown(fd.get(), SHUT_WR);
     return;
   }
-  connection->loop = next_loop_.fetch_add(1, std::memory_order_relaxed) % loops_.size();
-  // Like httplib, the first request may take the keep-alive timeout to start.
-  connection->deadline = Clock::now() + settings_.keep_alive_timeout;
-  park(std::move(connection));
-}
-
-void EventLoopEngine::park(std::shared_ptr<Connection> connection) {
-  Loop& loop = *loops_[connection->loop];
-  loop.post(std::move(connection));
-}
-
-EventLoopEngine::Outcome EventLoopEngine::serve_nonblocking(Connection& connection) {
-  ConnectionStream& stream = connection.stream;
-  for (;;) {
-    if (!stream.has_buffered_input()) return Outcome::idle;
-    switch (classify_request(stream.buffered_input(), settings_.max_body_bytes)) {
-      case RequestReadiness::incomplete:
-        return Outcome::wait_input;
-      case RequestReadiness::needs_thread:
-        return Outcome::to_thread;
-      case RequestReadiness::complete:
-        break;
-    }
-    stream.set_nonblocking_only(true);
-    stream.start_request(Clock::time_point::max());
-    // A request that arrived before the stop is answered, and is the connection's last.
-    const bool close_connection = connection.requests_left <= 1 || stopping_();
-    bool connection_closed = false;
-    bool ok = false;
-    try {
-      ok = serve_(stream, close_connection, connection_closed);
-    } catch (...) {
-      // httplib catches handler exceptions; anything else ends the connection.
-      return Outcome::close;
-    }
-    stream.set_nonblocking_only(false);
-    if (connection.requests_left > 1) --connection.requests_left;
-    connection.in_request = false;
-    counters_.requests.fetch_add(1, std::memory_order_relaxed);
-    const bool last = !ok || connection_closed || close_connection;
-    switch (stream.flush_nonblocking()) {
-      case ConnectionStream::Flush::error:
-        return Outcome::close;
-      case ConnectionStream::Flush::again:
-        connection.close_after_flush = last;
-        return Outcome::to_thread;
-      case ConnectionStream::Flush::done:
-        if (last) return Outcome::close;
-        break;
-    }
+  if (settings_.tcp_nodelay) {
+    // Fails harmlessly on a socket that is not TCP (the fuzzer's socketpair).
+    const int on = 1;
+    ::setsockopt(fd.get(), IPPROTO_TCP, TCP_NODELAY, &on, sizeof(on));
   }
-}
-
-bool EventLoopEngine::hand_to_thread(std::shared_ptr<Connection> connection) {
-  counters_.blocking_handoffs.fetch_add(1, std::memory_order_relaxed);
-  const bool responding = connection->stream.has_pending_output();
-  std::function<void()> task = [this, connection] { serve_blocking(connection); };
-  if (pool_->try_enqueue(task)) return true;
-  // At the thread cap with a full queue: refuse this request rather than wait.
-  counters_.rejected_at_cap.fetch_add(1, std::memory_order_relaxed);
-  if (!responding) {
-    [[maybe_unused]] const auto n =
-        ::send(connection->fd, kServiceUnavailable, sizeof(kServiceUnavailable) - 1,
-               MSG_NOSIGNAL | MSG_DONTWAIT);
+  std::unique_ptr<Connection> connection;
+  try {
+    connection = std::make_unique<Connection>(
+        std::move(fd), std::max<std::size_t>(settings_.keep_alive_max_requests, 1),
+        open_connections_);
+  } catch (...) {
+    return;  // out of memory: the descriptor closes with `fd`
   }
-  return false;  // `connection` (and the task's copy) drop here: closed
-}
-
-void EventLoopEngine::serve_blocking(const std::shared_ptr<Connection>& connection) {
-  ConnectionStream& stream = connection->stream;
-  stream.set_nonblocking_only(false);
-  if (stream.has_pending_output()) {
-    if (!stream.flush() || connection->close_after_flush) return;  // closed with the last copy
-  }
-  if (stream.has_buffered_input()) {
-    // A request has begun that needs blocking reads: serve it as stock httplib would, within
-    // the deadline set when its first bytes arrived.
-    stream.start_request(connection->in_request ? connection->deadline
-                         : settings_.request_timeout.count() > 0
-                             ? Clock::now() + settings_.request_timeout
-                             : Clock::time_point::max());
-    const bool close_connection = connection->requests_left <= 1 || stopping_();
-    bool connection_closed = false;
-    bool ok = false;
-    try {
-      ok = serve_(stream, close_connection, connection_closed);
-    } catch (...) {
-      return;  // closed with the last copy
-    }
-    if (connection->requests_left > 1) --connection->requests_left;
-    connection->in_request = false;
-    counters_.requests.fetch_add(1, std::memory_order_relaxed);
-    if (stream.timed_out()) {
-      counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
-      stream.flush();
-      return;
-    }
-    if (!stream.flush() || !ok || connection_closed || close_connection) return;
-  }
-  // Back to the loop for the next request (or for what is already buffered).
-  connection->deadline = Clock::now() + settings_.keep_alive_timeout;
-  park(connection);
+  const std::size_t loop = next_loop_.fetch_add(1, std::memory_order_relaxed) % loops_.size();
+  loops_[loop]->post(std::move(connection));
 }
 
 }  // namespace cutcalc::service

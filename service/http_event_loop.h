@@ -1,86 +1,102 @@
 #pragma once
-// Event loops for TunedServer: connections wait for their next request in epoll instead of
-// holding a thread each, and a request that is completely buffered is served right on the loop
-// thread (httplib's process_request() reading from the buffer, never from the socket). Anything
-// else (a request that needs blocking reads: chunked, Expect: 100-continue, no Content-Length on
-// a POST, oversized; or a response the socket cannot take at once) is handed to a thread of a
-// bounded ElasticThreadPool, served there exactly as stock httplib would, and the connection then
-// returns to its loop.
+// The HTTP engine: epoll loops that own the connections, frame each request strictly
+// (service/http_framing.h) and hand a complete one to the HTTP library to parse, route and answer
+// (service/http_connection.h: memory in, memory out). No request ever blocks a thread: a request
+// is served only once all of it has arrived, and a response the socket cannot take at once waits
+// for EPOLLOUT. Idle keep-alive connections and slow clients cost a few KiB and no thread.
 //
-// Why: with one blocking thread per connection, every request costs a sleep and a wake-up of
-// that thread (measured: ~19 us of CPU per request, a third of it in context switches, against
-// ~7 us for nginx); idle keep-alive connections and slowloris clients each pin a thread. On a
-// loop, one epoll_wait() returns many ready connections, an idle connection costs a few KiB, and
-// a slow request costs nothing until it is complete (deadline: request_timeout).
+// Ownership (the invariant the code keeps; Boost.Beast's async server is the model):
+//  - A connection is one `Connection`, held by exactly one `std::unique_ptr` at any moment: in
+//    adopt() (accept thread), then in one loop's inbox (under the inbox mutex), then in that loop's
+//    table. It never leaves its loop and is never shared; only its loop's thread touches it.
+//  - epoll knows a connection by its file descriptor (`data.fd`), never by a pointer; the loop
+//  looks
+//    the descriptor up in its table, so an event for a connection that is gone finds nothing.
+//  - The loop registers the descriptor with epoll after the connection is in its table, and removes
+//    it (EPOLL_CTL_DEL, checked) before the connection leaves the table; only then is it destroyed,
+//    and its `UniqueFd` closes the descriptor.
+//  - New connections are taken from the inbox after a batch of events is handled, so a descriptor
+//    number reused by the kernel can never meet a stale event of the same batch.
 //
-// Handlers run on the loop threads, so they must not block for long (cutcalc's handlers compute
-// for microseconds).
+// Why loops and no thread pool: one blocking thread per connection cost ~19 us of CPU per request
+// (a third in context switches) against ~12 us on loops; cutcalc's handlers compute for
+// microseconds (the largest polygon program ~0.1 s), so they run on the loop thread.
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <httplib.h>
 
-#include "service/elastic_thread_pool.h"
 #include "service/http_connection.h"
+#include "service/http_framing.h"
 
 namespace cutcalc::service {
 
 struct EventLoopSettings {
   std::size_t loops = 2;
-  std::chrono::milliseconds read_timeout{5000};
-  std::chrono::milliseconds write_timeout{5000};
-  std::chrono::milliseconds keep_alive_timeout{5000};
-  std::chrono::milliseconds request_timeout{10000};  // 0: none
+  std::chrono::milliseconds keep_alive_timeout{5000};  // idle between requests
+  std::chrono::milliseconds request_timeout{10000};    // first byte to last of a request; 0: none
+  std::chrono::milliseconds write_timeout{5000};       // a response waiting on a full socket
   std::size_t keep_alive_max_requests = 10000;
-  std::size_t max_body_bytes = 64 * 1024;
+  std::size_t max_connections = 10000;  // beyond: 503 and close
+  FramingLimits framing;
   bool tcp_nodelay = true;
-  ElasticThreadPool::Limits blocking_threads;
+};
+
+// A response the engine gives by itself, before any handler: a framing error (400), a body over
+// the limit (413) or the connection cap (503). The connection closes after it.
+struct EngineError {
+  int status = 400;
+  std::string_view detail;
+  std::string_view method;  // empty when the request line was not read
+  std::string_view target;
 };
 
 class EventLoopEngine {
  public:
-  // httplib's process_request() for one request on `stream`.
+  // httplib's process_request() for one request read from `stream`.
   using ServeRequest =
       std::function<bool(httplib::Stream& stream, bool close_connection, bool& connection_closed)>;
-  // True once the server has been stopped: connections are closed, no request is started.
+  // The whole response (status line to body) for an engine error; it must say Connection: close.
+  // Called on a loop thread or the accept thread.
+  using RenderError = std::function<std::string(const EngineError& error)>;
+  // True once the server has been stopped: idle connections close, responses say close.
   using Stopping = std::function<bool()>;
 
-  EventLoopEngine(EventLoopSettings settings, ServeRequest serve, Stopping stopping,
-                  ConnectionCounters& counters, std::shared_ptr<PoolLoad> load);
+  EventLoopEngine(EventLoopSettings settings, ServeRequest serve, RenderError render_error,
+                  Stopping stopping, ConnectionCounters& counters);
   EventLoopEngine(const EventLoopEngine&) = delete;
   EventLoopEngine& operator=(const EventLoopEngine&) = delete;
-  // Finishes the blocking threads' work, then closes every connection and joins the loops.
+  // Closes every connection and joins the loops.
   ~EventLoopEngine();
 
-  // Takes ownership of an accepted socket. Never blocks.
+  // Takes ownership of a connected socket (TCP, or any stream socket). Never blocks.
   void adopt(int sock);
 
   // After the server stopped accepting: waits until every request in flight has been answered
   // (idle connections are closed at once), or until `limit` passes. True when drained.
-  bool drain(std::chrono::milliseconds limit);
+  bool drain(std::chrono::milliseconds limit) const;
+
+  [[nodiscard]] std::size_t open_connections() const { return open_connections_.load(); }
 
  private:
   struct Connection;
   class Loop;
-  enum class Outcome { idle, wait_input, to_thread, close };
-
-  Outcome serve_nonblocking(Connection& connection);
-  void serve_blocking(const std::shared_ptr<Connection>& connection);
-  void park(std::shared_ptr<Connection> connection);
-  bool hand_to_thread(std::shared_ptr<Connection> connection);
 
   const EventLoopSettings settings_;
   const ServeRequest serve_;
+  const RenderError render_error_;
   const Stopping stopping_;
   ConnectionCounters& counters_;
-  std::unique_ptr<ElasticThreadPool> pool_;
-  std::vector<std::unique_ptr<Loop>> loops_;
-  std::atomic<std::size_t> next_loop_{0};
   std::atomic<std::size_t> open_connections_{0};  // adopted and not yet closed
+  std::atomic<std::size_t> next_loop_{0};
+  std::vector<std::unique_ptr<Loop>> loops_;  // last: its threads use everything above
 };
 
 }  // namespace cutcalc::service

@@ -66,4 +66,40 @@ std::string Metrics::render() const {
   return out.str();
 }
 
+std::string render_connection_metrics(const ConnectionCounters& counters,
+                                      std::size_t open_connections) {
+  struct Counter {
+    const char* name;
+    const char* help;
+    const std::atomic<std::uint64_t>& value;
+  };
+  const Counter all[] = {
+      {"cutcalc_http_connections_total", "Connections accepted.", counters.connections},
+      {"cutcalc_http_engine_requests_total", "Requests handed to the HTTP library.",
+       counters.requests},
+      {"cutcalc_http_framing_rejections_total",
+       "Requests the engine answered 400/413 itself (malformed or ambiguous framing, body too "
+       "large); each closed its connection.",
+       counters.rejected_requests},
+      {"cutcalc_http_request_timeouts_total",
+       "Connections closed because a request did not arrive whole in time.",
+       counters.request_timeouts},
+      {"cutcalc_http_connections_refused_total", "Connections answered 503 at the connection cap.",
+       counters.rejected_at_cap},
+      {"cutcalc_http_epoll_failures_total", "epoll_ctl calls that failed (the connection closed).",
+       counters.epoll_failures},
+  };
+  std::ostringstream out;
+  for (const Counter& counter : all) {
+    out << "# HELP " << counter.name << ' ' << counter.help << "\n# TYPE " << counter.name
+        << " counter\n"
+        << counter.name << ' ' << counter.value.load(std::memory_order_relaxed) << '\n';
+  }
+  out << "# HELP cutcalc_http_open_connections Connections open now.\n"
+         "# TYPE cutcalc_http_open_connections gauge\n"
+         "cutcalc_http_open_connections "
+      << open_connections << '\n';
+  return out.str();
+}
+
 }  // namespace cutcalc::service

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <tuple>
 
+#include "service/http_connection.h"
+
 namespace cutcalc::service {
 
 class Metrics {
@@ -39,5 +41,9 @@ class Metrics {
   std::map<std::string_view, Histogram> latency_;
   std::atomic<std::int64_t> in_flight_{0};
 };
+
+// The HTTP engine's connection counters (service/http_connection.h) in the same format.
+std::string render_connection_metrics(const ConnectionCounters& counters,
+                                      std::size_t open_connections);
 
 }  // namespace cutcalc::service

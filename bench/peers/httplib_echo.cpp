@@ -3,12 +3,13 @@
 // cutcalc, so the benchmark can tell the cost of cutcalc's own work from the cost of the HTTP
 // layer. Other modes exist to measure what the tuning does:
 //   --mode tuned    TunedServer + apply_http_tuning + bind_with_backlog (as cutcalc; default)
-//   --mode setters  httplib::Server + apply_http_tuning + bind_with_backlog (library loop)
+//   --mode setters  httplib::Server + apply_http_tuning + bind_with_backlog (the library's own
+//                   connection loop and fixed thread pool, with cutcalc's runtime settings)
 //   --mode untuned  httplib::Server with the library's compiled-in defaults (only an explicit
 //                   --nodelay is applied, to isolate its effect)
-// usage: httplib_echo [--host H] [--port P] [--threads N] [--max-threads N] [--backlog N]
-//                     [--nodelay 0|1] [--keep-alive-max N] [--event-loop 0|1]
-//                     [--mode tuned|setters|untuned] [--log-level L (ignored)]
+// usage: httplib_echo [--host H] [--port P] [--threads N] [--backlog N] [--nodelay 0|1]
+//                     [--keep-alive-max N] [--mode tuned|setters|untuned] [--log-level L (ignored)]
+// (--threads: the engine's event loops in tuned mode.)
 // Prints "listening on H:P" once bound; SIGINT/SIGTERM stop it cleanly.
 
 #include <pthread.h>
@@ -65,17 +66,12 @@ bool parse(int argc, char** argv, Options& options) {
     } else if (flag == "--port") {
       options.port = static_cast<int>(number);
     } else if (flag == "--threads") {
-      options.tuning.worker_threads = number;
-      options.tuning.max_worker_threads = std::max(options.tuning.max_worker_threads, number);
-    } else if (flag == "--max-threads") {
-      options.tuning.max_worker_threads = number;
+      options.tuning.event_loop_threads = number;
     } else if (flag == "--backlog") {
       options.tuning.listen_backlog = static_cast<int>(number);
     } else if (flag == "--nodelay") {
       options.tuning.tcp_nodelay = number != 0;
       options.nodelay_given = true;
-    } else if (flag == "--event-loop") {
-      options.tuning.event_loop = number != 0;
     } else if (flag == "--keep-alive-max") {
       options.tuning.keep_alive_max_requests = number;
     } else {
@@ -91,9 +87,8 @@ int main(int argc, char** argv) {
   Options options;
   if (!parse(argc, argv, options)) {
     std::fprintf(stderr,
-                 "usage: httplib_echo [--host H] [--port P] [--threads N] [--max-threads N]"
-                 " [--backlog N] [--nodelay 0|1] [--keep-alive-max N] [--event-loop 0|1]"
-                 " [--mode tuned|setters|untuned]\n");
+                 "usage: httplib_echo [--host H] [--port P] [--threads N] [--backlog N]"
+                 " [--nodelay 0|1] [--keep-alive-max N] [--mode tuned|setters|untuned]\n");
     return 2;
   }
 
@@ -106,7 +101,10 @@ int main(int argc, char** argv) {
 
   std::unique_ptr<httplib::Server> server;
   if (options.mode == "tuned") {
-    server = std::make_unique<cutcalc::service::TunedServer>();
+    server = std::make_unique<cutcalc::service::TunedServer>(
+        options.tuning, [](const cutcalc::service::EngineError& error) {
+          return cutcalc::service::closing_response(error.status, "text/plain", error.detail);
+        });
   } else {
     server = std::make_unique<httplib::Server>();
   }
@@ -121,7 +119,7 @@ int main(int argc, char** argv) {
                ? server->bind_to_any_port(options.host)
                : (server->bind_to_port(options.host, options.port) ? options.port : -1);
   } else {
-    cutcalc::service::apply_http_tuning(*server, options.tuning);
+    if (options.mode == "setters") cutcalc::service::apply_http_tuning(*server, options.tuning);
     port = cutcalc::service::bind_with_backlog(*server, options.host.c_str(), options.port,
                                                options.tuning.listen_backlog);
   }

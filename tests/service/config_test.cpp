@@ -31,7 +31,7 @@ TEST(Config, FlagsSetEverySetting) {
   ASSERT_TRUE(outcome.config) << outcome.message;
   EXPECT_EQ(outcome.config->host, "0.0.0.0");
   EXPECT_EQ(outcome.config->port, 9000);
-  EXPECT_EQ(outcome.config->http.worker_threads, 16U);
+  EXPECT_EQ(outcome.config->http.event_loop_threads, 16U);
   EXPECT_EQ(outcome.config->log_level, "warn");
   EXPECT_EQ(outcome.config->log_format, LogFormat::json);
 }

@@ -14,6 +14,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "support/http_responses.h"
+
 namespace cutcalc::testing {
 
 ServiceProcess::ServiceProcess(const std::string& binary, std::vector<std::string> args) {
@@ -129,6 +131,39 @@ std::string RawConnection::read_all(int timeout_ms) {
     out.append(buffer, static_cast<std::size_t>(n));
   }
   return out;
+}
+
+namespace {
+
+// One recv() of what arrives within the time left; 0 when the peer closed, -1 on timeout.
+ssize_t receive_some(int fd, std::string& into, std::chrono::steady_clock::time_point until) {
+  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+      until - std::chrono::steady_clock::now());
+  pollfd ready{fd, POLLIN, 0};
+  if (left.count() <= 0 || poll(&ready, 1, static_cast<int>(left.count())) <= 0) return -1;
+  char buffer[65536];
+  const ssize_t n = recv(fd, buffer, sizeof buffer, 0);
+  if (n > 0) into.append(buffer, static_cast<std::size_t>(n));
+  return n < 0 ? 0 : n;  // a reset counts as closed
+}
+
+}  // namespace
+
+std::string RawConnection::read_responses(std::size_t finals, int timeout_ms) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+  std::string out;
+  while (parse_responses(out).finals() < finals && receive_some(fd_, out, until) > 0) {
+  }
+  return out;
+}
+
+bool RawConnection::read_until_closed(int timeout_ms, std::string& into) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
+  for (;;) {
+    const ssize_t n = receive_some(fd_, into, until);
+    if (n == 0) return true;
+    if (n < 0) return false;
+  }
 }
 
 }  // namespace cutcalc::testing

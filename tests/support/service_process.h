@@ -4,6 +4,7 @@
 
 #include <sys/types.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,12 @@ class RawConnection {
   bool send_all(const std::string& bytes);
   // Reads until the peer closes or `timeout_ms` passes without data.
   std::string read_all(int timeout_ms);
+  // Reads until `finals` final responses (support/http_responses.h) are in, the peer closes or
+  // `timeout_ms` passes in all.
+  std::string read_responses(std::size_t finals, int timeout_ms);
+  // Reads until the peer closes (true) or `timeout_ms` passes in all (false); appends to `into`.
+  bool read_until_closed(int timeout_ms, std::string& into);
+  [[nodiscard]] int fd() const { return fd_; }
 
  private:
   int fd_ = -1;

@@ -1,0 +1,366 @@
+#include "service/http_framing.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace cutcalc::service {
+namespace {
+
+using Verdict = RequestFrame::Verdict;
+constexpr std::size_t npos = std::string_view::npos;
+
+// Content-Length values are parsed saturating here (far above any body limit).
+constexpr std::uint64_t kLengthCap = std::uint64_t{1} << 62;
+
+bool is_tchar(char c) {
+  if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')) return true;
+  return std::string_view("!#$%&'*+-.^_`|~").find(c) != npos;
+}
+
+bool is_token(std::string_view text) {
+  return !text.empty() && std::all_of(text.begin(), text.end(), is_tchar);
+}
+
+// field-value (RFC 9110 5.5): VCHAR, obs-text, SP and HTAB; no other control characters.
+bool is_field_value(std::string_view text) {
+  return std::all_of(text.begin(), text.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return c == ' ' || c == '\t' || (u >= 0x21 && u != 0x7f);
+  });
+}
+
+// The methods cpp-httplib 0.11 parses (Server::parse_request_line); it answers others with a bare
+// 400 before any of our handlers could name the request.
+bool is_library_method(std::string_view method) {
+  for (const std::string_view known :
+       {"GET", "HEAD", "POST", "PUT", "DELETE", "CONNECT", "OPTIONS", "TRACE", "PATCH", "PRI"}) {
+    if (method == known) return true;
+  }
+  return false;
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t'; }
+
+std::string_view trim(std::string_view text) {
+  while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
+  while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; };
+           return lower(x) == lower(y);
+         });
+}
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+enum class Line { ok, incomplete, bad };
+
+// The CRLF-terminated line at `pos` (without its CRLF). A line is bad when its LF has no CR before
+// it, or it holds a CR or NUL of its own.
+Line next_line(std::string_view input, std::size_t pos, std::string_view& line) {
+  const std::size_t lf = input.find('\n', pos);
+  if (lf == npos) {
+    const std::string_view partial = input.substr(pos);
+    const std::size_t cr = partial.find('\r');
+    // A CR that is not the last byte must be followed by LF, which it is not.
+    if ((cr != npos && cr + 1 < partial.size()) || partial.find('\0') != npos) return Line::bad;
+    return Line::incomplete;
+  }
+  if (lf == pos || input[lf - 1] != '\r') return Line::bad;
+  line = input.substr(pos, lf - 1 - pos);
+  if (line.find('\r') != npos || line.find('\0') != npos) return Line::bad;
+  return Line::ok;
+}
+
+RequestFrame reject(RequestFrame frame, int status, std::string_view reason) {
+  frame.verdict = Verdict::reject;
+  frame.status = status;
+  frame.reason = reason;
+  return frame;
+}
+
+// A field line: name ":" OWS value OWS (RFC 9112 5.1); no obs-fold, no space before the colon.
+bool split_field(std::string_view line, std::string_view& name, std::string_view& value) {
+  const std::size_t colon = line.find(':');
+  if (colon == npos) return false;
+  name = line.substr(0, colon);
+  value = trim(line.substr(colon + 1));
+  return is_token(name) && is_field_value(value);
+}
+
+// "42" or "42, 42": every element all digits and the same (RFC 9110 8.6). False otherwise.
+bool parse_content_length(std::string_view value, bool& seen, std::uint64_t& length) {
+  do {
+    const std::size_t comma = value.find(',');
+    const std::string_view element = trim(value.substr(0, comma));
+    value = comma == npos ? std::string_view{} : value.substr(comma + 1);
+    if (element.empty()) return false;
+    std::uint64_t parsed = 0;
+    for (const char c : element) {
+      if (c < '0' || c > '9') return false;
+      parsed = std::min(parsed * 10 + static_cast<std::uint64_t>(c - '0'), kLengthCap);
+    }
+    if (seen && parsed != length) return false;
+    seen = true;
+    length = parsed;
+  } while (!value.empty());
+  return true;
+}
+
+// Walks a chunked body from `pos` (RFC 9112 7.1). Sets the frame's wire and body sizes when the
+// last chunk and the trailer section are in; `decoded`, when given, receives the content.
+RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame frame,
+                           const FramingLimits& limits, std::string* decoded) {
+  std::size_t framing = 0;  // chunk sizes, extensions, CRLFs and trailers
+  std::size_t content = 0;
+  std::size_t fields = 0;
+  const auto budget_left = [&] {
+    return limits.max_head_bytes - std::min(framing, limits.max_head_bytes);
+  };
+  for (;;) {
+    std::string_view line;
+    switch (next_line(input, pos, line)) {
+      case Line::bad:
+        return reject(frame, 400, "malformed chunk size line");
+      case Line::incomplete:
+        if (input.size() - pos > budget_left()) {
+          return reject(frame, 400, "chunk framing is over the head size limit");
+        }
+        return frame;
+      case Line::ok:
+        break;
+    }
+    framing += line.size() + 2;
+    if (framing > limits.max_head_bytes) {
+      return reject(frame, 400, "chunk framing is over the head size limit");
+    }
+    pos += line.size() + 2;
+    // chunk-size [ chunk-ext ]: 1*HEXDIG, then nothing or BWS ";" and the extension (ignored).
+    std::size_t digits = 0;
+    std::uint64_t size = 0;
+    while (digits < line.size() && hex_digit(line[digits]) >= 0) {
+      size = std::min(size * 16 + static_cast<std::uint64_t>(hex_digit(line[digits])), kLengthCap);
+      ++digits;
+    }
+    const std::string_view rest = trim(line.substr(digits));
+    if (digits == 0 || (!rest.empty() && (rest.front() != ';' || !is_field_value(rest)))) {
+      return reject(frame, 400, "malformed chunk size line");
+    }
+    if (size > limits.max_body_bytes - content) {
+      return reject(frame, 413, "the request body is over the size limit");
+    }
+    if (size == 0) break;
+    if (input.size() - pos < size + 2) return frame;
+    if (input.substr(pos + size, 2) != "\r\n") {
+      return reject(frame, 400, "chunk data is not followed by CRLF");
+    }
+    if (decoded != nullptr) decoded->append(input.substr(pos, size));
+    content += size;
+    pos += size + 2;
+    framing += 2;
+  }
+  // Trailer section: field lines (validated, then dropped), then an empty line.
+  for (;;) {
+    std::string_view line;
+    switch (next_line(input, pos, line)) {
+      case Line::bad:
+        return reject(frame, 400, "malformed trailer field");
+      case Line::incomplete:
+        if (input.size() - pos > budget_left()) {
+          return reject(frame, 400, "chunk framing is over the head size limit");
+        }
+        return frame;
+      case Line::ok:
+        break;
+    }
+    framing += line.size() + 2;
+    pos += line.size() + 2;
+    if (framing > limits.max_head_bytes) {
+      return reject(frame, 400, "chunk framing is over the head size limit");
+    }
+    if (line.empty()) break;
+    std::string_view name;
+    std::string_view value;
+    if (!split_field(line, name, value) || ++fields > limits.max_fields) {
+      return reject(frame, 400, "malformed trailer field");
+    }
+  }
+  frame.verdict = Verdict::complete;
+  frame.wire_bytes = pos;
+  frame.body_bytes = content;
+  return frame;
+}
+
+}  // namespace
+
+RequestFrame classify_request(std::string_view input, const FramingLimits& limits) {
+  RequestFrame frame;
+  std::size_t pos = 0;
+  // Empty lines before the request line are ignored (RFC 9112 2.2).
+  while (input.substr(pos, 2) == "\r\n") pos += 2;
+  if (pos > limits.max_head_bytes) {
+    return reject(frame, 400, "too many empty lines before the request line");
+  }
+  frame.skipped_bytes = pos;
+  const std::size_t start = pos;
+  const auto head_too_large = [&](std::size_t end) { return end - start > limits.max_head_bytes; };
+
+  // request-line = method SP request-target SP HTTP-version (RFC 9112 3)
+  std::string_view request_line;
+  switch (next_line(input, pos, request_line)) {
+    case Line::bad:
+      return reject(frame, 400, "malformed request line");
+    case Line::incomplete:
+      if (head_too_large(input.size())) {
+        return reject(frame, 400, "the request head is over the size limit");
+      }
+      return frame;
+    case Line::ok:
+      break;
+  }
+  pos += request_line.size() + 2;
+  const std::size_t space1 = request_line.find(' ');
+  const std::size_t space2 = space1 == npos ? npos : request_line.find(' ', space1 + 1);
+  if (space2 == npos || space2 == space1 + 1 || request_line.find(' ', space2 + 1) != npos) {
+    return reject(frame, 400, "malformed request line");
+  }
+  const std::string_view method = request_line.substr(0, space1);
+  const std::string_view target = request_line.substr(space1 + 1, space2 - space1 - 1);
+  const std::string_view version = request_line.substr(space2 + 1);
+  // origin-form, absolute-form or asterisk-form (RFC 9112 3.2), visible ASCII, no fragment.
+  const bool target_ok =
+      (target.front() == '/' || target == "*" || iequals(target.substr(0, 7), "http://") ||
+       iequals(target.substr(0, 8), "https://")) &&
+      std::all_of(target.begin(), target.end(),
+                  [](char c) { return c > 0x20 && c < 0x7f && c != '#'; });
+  if (!is_token(method) || !target_ok) return reject(frame, 400, "malformed request line");
+  if (request_line.size() > limits.max_request_line_bytes) {
+    return reject(frame, 400, "the request line is over the size limit");
+  }
+  frame.method = method;
+  frame.target = target;
+  if (!is_library_method(method)) return reject(frame, 400, "unknown method");
+  const bool http11 = version == "HTTP/1.1";
+  if (!http11 && version != "HTTP/1.0") {
+    return reject(frame, 400, "the HTTP version is not HTTP/1.1 or HTTP/1.0");
+  }
+
+  // field lines, up to the empty line
+  std::size_t fields = 0;
+  std::size_t hosts = 0;
+  bool has_length = false;
+  std::uint64_t length = 0;
+  bool has_transfer_encoding = false;
+  std::size_t codings = 0;
+  bool only_chunked = true;
+  for (;;) {
+    std::string_view line;
+    switch (next_line(input, pos, line)) {
+      case Line::bad:
+        return reject(frame, 400, "malformed header field line");
+      case Line::incomplete:
+        if (head_too_large(input.size())) {
+          return reject(frame, 400, "the request head is over the size limit");
+        }
+        return frame;
+      case Line::ok:
+        break;
+    }
+    pos += line.size() + 2;
+    if (head_too_large(pos)) return reject(frame, 400, "the request head is over the size limit");
+    if (line.empty()) break;
+    std::string_view name;
+    std::string_view value;
+    if (!split_field(line, name, value)) return reject(frame, 400, "malformed header field line");
+    if (line.size() > limits.max_field_line_bytes) {
+      return reject(frame, 400, "a header field line is over the size limit");
+    }
+    if (++fields > limits.max_fields) return reject(frame, 400, "too many header fields");
+    if (iequals(name, "content-length")) {
+      if (!parse_content_length(value, has_length, length)) {
+        return reject(frame, 400, "Content-Length must be one number (digits only)");
+      }
+    } else if (iequals(name, "transfer-encoding")) {
+      has_transfer_encoding = true;
+      std::string_view rest = value;
+      do {
+        const std::size_t comma = rest.find(',');
+        const std::string_view coding = trim(rest.substr(0, comma));
+        rest = comma == npos ? std::string_view{} : rest.substr(comma + 1);
+        if (coding.empty()) continue;
+        ++codings;
+        only_chunked = only_chunked && iequals(coding, "chunked");
+      } while (!rest.empty());
+    } else if (iequals(name, "host")) {
+      ++hosts;
+    } else if (iequals(name, "expect")) {
+      frame.expects_continue = frame.expects_continue || (http11 && iequals(value, "100-continue"));
+    }
+  }
+  frame.head_bytes = pos - start;
+
+  if (http11 ? hosts != 1 : hosts > 1) {
+    return reject(frame, 400, "an HTTP/1.1 request needs exactly one Host header");
+  }
+  if (has_transfer_encoding) {
+    if (has_length) return reject(frame, 400, "Transfer-Encoding and Content-Length together");
+    if (!http11) return reject(frame, 400, "Transfer-Encoding in an HTTP/1.0 request");
+    if (codings != 1 || !only_chunked) {
+      return reject(frame, 400, "the only transfer coding accepted is chunked");
+    }
+    frame.chunked = true;
+    return frame_chunked(input, pos, frame, limits, nullptr);
+  }
+  if (length > limits.max_body_bytes) {
+    return reject(frame, 413, "the request body is over the size limit");
+  }
+  frame.body_bytes = static_cast<std::size_t>(length);
+  if (input.size() - pos < frame.body_bytes) return frame;
+  frame.verdict = Verdict::complete;
+  frame.wire_bytes = pos + frame.body_bytes;
+  return frame;
+}
+
+std::string_view library_request(std::string_view input, const RequestFrame& frame,
+                                 std::string& scratch) {
+  const std::size_t start = frame.skipped_bytes;
+  if (!frame.chunked && !frame.expects_continue) {
+    return input.substr(start, frame.wire_bytes - start);
+  }
+  // The frame is complete, so every line below is known to be well-formed.
+  scratch.clear();
+  std::size_t pos = start;
+  std::string_view line;
+  next_line(input, pos, line);
+  scratch.append(line).append("\r\n");
+  pos += line.size() + 2;
+  for (;;) {
+    next_line(input, pos, line);
+    pos += line.size() + 2;
+    if (line.empty()) break;
+    std::string_view name;
+    std::string_view value;
+    split_field(line, name, value);
+    if (iequals(name, "transfer-encoding") || iequals(name, "expect")) continue;
+    scratch.append(line).append("\r\n");
+  }
+  if (!frame.chunked) {
+    scratch.append("\r\n").append(input.substr(pos, frame.body_bytes));
+    return scratch;
+  }
+  scratch.append("Content-Length: ").append(std::to_string(frame.body_bytes)).append("\r\n\r\n");
+  RequestFrame walk = frame;
+  frame_chunked(input, pos, walk, FramingLimits{SIZE_MAX / 4, SIZE_MAX / 4, SIZE_MAX / 4},
+                &scratch);
+  return scratch;
+}
+
+}  // namespace cutcalc::service

@@ -1,0 +1,217 @@
+// classify_request() and library_request(): where a request ends (RFC 9112 sections 2-7), and
+// the bytes the HTTP library is given for it.
+
+#include "service/http_framing.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <string_view>
+
+namespace cutcalc::service {
+namespace {
+
+using Verdict = RequestFrame::Verdict;
+
+const FramingLimits kLimits;
+
+RequestFrame frame(std::string_view input) { return classify_request(input, kLimits); }
+
+void expect_reject(std::string_view input, int status, std::string_view reason_part) {
+  const RequestFrame result = frame(input);
+  EXPECT_EQ(result.verdict, Verdict::reject) << input;
+  EXPECT_EQ(result.status, status) << input;
+  EXPECT_NE(result.reason.find(reason_part), std::string_view::npos)
+      << "reason '" << result.reason << "' for " << input;
+}
+
+TEST(ClassifyRequest, GetWithoutBodyIsCompleteAtTheEmptyLine) {
+  const std::string get = "GET /healthz HTTP/1.1\r\nHost: a\r\n\r\n";
+  const std::string input = get + "GET /version HTTP/1.1\r\n";  // the frame's views point here
+  const RequestFrame result = frame(input);
+  EXPECT_EQ(result.verdict, Verdict::complete);
+  EXPECT_EQ(result.wire_bytes, get.size());
+  EXPECT_EQ(result.method, "GET");
+  EXPECT_EQ(result.target, "/healthz");
+}
+
+TEST(ClassifyRequest, ContentLengthBodyIsWaitedForThenEndsExactly) {
+  const std::string head = "POST /v1/x HTTP/1.1\r\nHost: a\r\nContent-Length: 5\r\n\r\n";
+  EXPECT_EQ(frame(head + "{\"a\"").verdict, Verdict::incomplete);
+  const RequestFrame result = frame(head + "{\"a\":GET");
+  ASSERT_EQ(result.verdict, Verdict::complete);
+  EXPECT_EQ(result.wire_bytes, head.size() + 5);
+  EXPECT_EQ(result.body_bytes, 5U);
+}
+
+TEST(ClassifyRequest, EveryPrefixOfARequestIsIncomplete) {
+  const std::string request =
+      "POST /v1/x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: chunked\r\n\r\n3\r\nabc\r\n0\r\n\r\n";
+  for (std::size_t n = 0; n < request.size(); ++n) {
+    EXPECT_EQ(frame(request.substr(0, n)).verdict, Verdict::incomplete) << n;
+  }
+  EXPECT_EQ(frame(request).verdict, Verdict::complete);
+}
+
+TEST(ClassifyRequest, LeadingEmptyLinesAreSkipped) {
+  const RequestFrame result = frame("\r\n\r\nGET / HTTP/1.1\r\nHost: a\r\n\r\n");
+  ASSERT_EQ(result.verdict, Verdict::complete);
+  EXPECT_EQ(result.skipped_bytes, 4U);
+  EXPECT_EQ(result.wire_bytes, 4U + 27U);
+}
+
+TEST(ClassifyRequest, ContentLengthWithTransferEncodingIsRejected) {
+  expect_reject(
+      "POST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 5\r\nTransfer-Encoding: chunked\r\n\r\n", 400,
+      "Transfer-Encoding and Content-Length");
+  expect_reject(
+      "POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: chunked\r\nContent-Length: 5\r\n\r\n", 400,
+      "Transfer-Encoding and Content-Length");
+}
+
+TEST(ClassifyRequest, TransferCodingOtherThanChunkedIsRejected) {
+  for (const char* coding : {"xchunked", "gzip, chunked", "chunked, chunked", "chunked;q=1", ""}) {
+    expect_reject(std::string("POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: ") + coding +
+                      "\r\n\r\n0\r\n\r\n",
+                  400, "only transfer coding");
+  }
+  expect_reject(
+      "POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: xchunked\r\nContent-Length: 3"
+      "\r\n\r\nabc",
+      400, "Transfer-Encoding and Content-Length");
+  EXPECT_EQ(
+      frame("POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: ChUnKeD\r\n\r\n0\r\n\r\n").verdict,
+      Verdict::complete);
+}
+
+TEST(ClassifyRequest, TransferEncodingInHttp10IsRejected) {
+  expect_reject("POST /x HTTP/1.0\r\nTransfer-Encoding: chunked\r\n\r\n0\r\n\r\n", 400, "HTTP/1.0");
+}
+
+TEST(ClassifyRequest, DifferingOrNonDigitContentLengthsAreRejected) {
+  for (const char* lengths : {"Content-Length: 2\r\nContent-Length: 3", "Content-Length: +2",
+                              "Content-Length: 2, 3", "Content-Length: -1", "Content-Length: 0x2",
+                              "Content-Length: ", "Content-Length: 2 2", "Content-Length: 1e1"}) {
+    expect_reject(std::string("POST /x HTTP/1.1\r\nHost: a\r\n") + lengths + "\r\n\r\n{}", 400,
+                  "Content-Length");
+  }
+}
+
+TEST(ClassifyRequest, RepeatedEqualContentLengthsAreOneLength) {
+  const RequestFrame result =
+      frame("POST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 2\r\nContent-Length: 2, 2\r\n\r\n{}");
+  ASSERT_EQ(result.verdict, Verdict::complete);
+  EXPECT_EQ(result.body_bytes, 2U);
+}
+
+TEST(ClassifyRequest, BodyOverTheLimitIsRejectedBeforeItArrives) {
+  expect_reject("POST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 65537\r\n\r\n", 413, "size limit");
+  expect_reject("POST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 99999999999999999999999\r\n\r\n",
+                413, "size limit");
+  expect_reject("POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: chunked\r\n\r\n10001\r\n", 413,
+                "size limit");
+  const RequestFrame at_limit =
+      frame("POST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 65536\r\n\r\n");
+  EXPECT_EQ(at_limit.verdict, Verdict::incomplete);
+}
+
+TEST(ClassifyRequest, ChunkedBodiesOverTheLimitInSumAreRejected) {
+  std::string request = "POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: chunked\r\n\r\n";
+  const std::string chunk(0x8000, 'x');
+  request += "8000\r\n" + chunk + "\r\n8000\r\n" + chunk + "\r\n";
+  EXPECT_EQ(frame(request).verdict, Verdict::incomplete);  // exactly 64 KiB so far
+  expect_reject(request + "1\r\n", 413, "size limit");
+}
+
+TEST(ClassifyRequest, BadChunkSizesAreRejected) {
+  const std::string head = "POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: chunked\r\n\r\n";
+  for (const char* body :
+       {"g\r\n", "\r\n", "-1\r\n", " 1\r\nx\r\n", "1 x\r\n", "0x1\r\n", "1\nx\r\n"}) {
+    expect_reject(head + body, 400, "chunk size");
+  }
+  expect_reject(head + "3\r\nabcX\r\n", 400, "not followed by CRLF");
+}
+
+TEST(ClassifyRequest, ChunkExtensionsAndTrailersAreAccepted) {
+  const std::string request =
+      "POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: chunked\r\n\r\n"
+      "3;name=value\r\nabc\r\n2 ; x\r\nde\r\n0\r\nX-Checksum: 1\r\n\r\n";
+  const RequestFrame result = frame(request + "GET");
+  ASSERT_EQ(result.verdict, Verdict::complete);
+  EXPECT_EQ(result.wire_bytes, request.size());
+  EXPECT_EQ(result.body_bytes, 5U);
+}
+
+TEST(ClassifyRequest, MalformedHeadsAreRejected) {
+  expect_reject("GET / HTTP/1.1\nHost: a\r\n\r\n", 400, "request line");
+  expect_reject("GET / HTTP/1.1\r\nHost: a\n\r\n", 400, "header field");
+  expect_reject("GET / HTTP/1.1\r\nHost: a\rb\r\n\r\n", 400, "header field");
+  expect_reject("GET / HTTP/1.1\r\nHost : a\r\n\r\n", 400, "header field");
+  expect_reject("GET / HTTP/1.1\r\nHost: a\r\n folded\r\n\r\n", 400, "header field");
+  expect_reject(std::string("GET / HTTP/1.1\r\nHost: a\0b\r\n\r\n", 29), 400, "header field");
+  expect_reject("GET / HTTP/1.1\r\nNo colon\r\n\r\n", 400, "header field");
+  expect_reject("GET  / HTTP/1.1\r\nHost: a\r\n\r\n", 400, "request line");
+  expect_reject("GET / HTTP/1.1 \r\nHost: a\r\n\r\n", 400, "request line");
+  expect_reject("GET /#frag HTTP/1.1\r\nHost: a\r\n\r\n", 400, "request line");
+  expect_reject("GET #x HTTP/1.1\r\nHost: a\r\n\r\n", 400, "request line");
+  expect_reject("GET / HTTP/2.0\r\nHost: a\r\n\r\n", 400, "version");
+  expect_reject("BREW / HTTP/1.1\r\nHost: a\r\n\r\n", 400, "unknown method");
+  expect_reject("garbage\r\n", 400, "request line");
+}
+
+TEST(ClassifyRequest, Http11NeedsExactlyOneHost) {
+  expect_reject("GET / HTTP/1.1\r\n\r\n", 400, "Host");
+  expect_reject("GET / HTTP/1.1\r\nHost: a\r\nHost: b\r\n\r\n", 400, "Host");
+  EXPECT_EQ(frame("GET / HTTP/1.0\r\n\r\n").verdict, Verdict::complete);
+}
+
+TEST(ClassifyRequest, OversizedHeadsAreRejectedWithoutWaitingForTheirEnd) {
+  const std::string long_field = "GET / HTTP/1.1\r\nHost: a\r\nX: " + std::string(20000, 'x');
+  expect_reject(long_field, 400, "head is over the size limit");
+  expect_reject("GET /" + std::string(9000, 'a') + " HTTP/1.1\r\nHost: a\r\n\r\n", 400,
+                "request line is over");
+  expect_reject("GET / HTTP/1.1\r\nHost: a\r\nX: " + std::string(9000, 'x') + "\r\n\r\n", 400,
+                "field line is over");
+  std::string many = "GET / HTTP/1.1\r\nHost: a\r\n";
+  for (int i = 0; i < 100; ++i) many += "X: 1\r\n";
+  expect_reject(many + "\r\n", 400, "too many header fields");
+}
+
+TEST(ClassifyRequest, ExpectContinueIsNotedForHttp11Only) {
+  EXPECT_TRUE(frame("POST /x HTTP/1.1\r\nHost: a\r\nExpect: 100-Continue\r\nContent-Length: 2"
+                    "\r\n\r\n")
+                  .expects_continue);
+  EXPECT_FALSE(frame("POST /x HTTP/1.0\r\nExpect: 100-continue\r\nContent-Length: 2\r\n\r\n")
+                   .expects_continue);
+}
+
+TEST(LibraryRequest, PlainRequestIsPassedAsItCame) {
+  const std::string input = "\r\nPOST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 2\r\n\r\n{}NEXT";
+  const RequestFrame result = frame(input);
+  std::string scratch;
+  const std::string_view bytes = library_request(input, result, scratch);
+  EXPECT_EQ(bytes, input.substr(2, input.size() - 6));
+  EXPECT_TRUE(scratch.empty());
+}
+
+TEST(LibraryRequest, ChunkedBodyIsDecodedUnderAContentLength) {
+  const std::string input =
+      "POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: chunked\r\nExpect: 100-continue\r\n"
+      "Accept: */*\r\n\r\n2;e=1\r\n{\"\r\n3\r\na\":\r\n2\r\n1}\r\n0\r\nT: 1\r\n\r\nNEXT";
+  const RequestFrame result = frame(input);
+  ASSERT_EQ(result.verdict, Verdict::complete);
+  std::string scratch;
+  EXPECT_EQ(library_request(input, result, scratch),
+            "POST /x HTTP/1.1\r\nHost: a\r\nAccept: */*\r\nContent-Length: 7\r\n\r\n{\"a\":1}");
+}
+
+TEST(LibraryRequest, ExpectIsRemovedSoThatTheLibraryDoesNotAnswerItAgain) {
+  const std::string input =
+      "POST /x HTTP/1.1\r\nExpect: 100-continue\r\nHost: a\r\nContent-Length: 2\r\n\r\n{}";
+  std::string scratch;
+  EXPECT_EQ(library_request(input, frame(input), scratch),
+            "POST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 2\r\n\r\n{}");
+}
+
+}  // namespace
+}  // namespace cutcalc::service

@@ -1,0 +1,100 @@
+#include "support/http_responses.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace cutcalc::testing {
+namespace {
+
+constexpr std::string_view kVersion = "HTTP/1.1 ";
+
+std::string lower(std::string_view text) {
+  std::string out(text);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+bool all_digits(std::string_view text) {
+  return !text.empty() && std::all_of(text.begin(), text.end(),
+                                      [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+}  // namespace
+
+std::string HttpResponse::header(std::string_view name) const {
+  for (const auto& [key, value] : headers) {
+    if (key == name) return value;
+  }
+  return {};
+}
+
+std::size_t HttpResponse::count(std::string_view name) const {
+  return static_cast<std::size_t>(std::count_if(
+      headers.begin(), headers.end(), [&](const auto& field) { return field.first == name; }));
+}
+
+std::size_t ParsedResponses::finals() const {
+  return static_cast<std::size_t>(std::count_if(
+      responses.begin(), responses.end(), [](const HttpResponse& r) { return !r.interim(); }));
+}
+
+ParsedResponses parse_responses(std::string_view bytes) {
+  ParsedResponses parsed;
+  const auto fail = [&](std::string what) {
+    parsed.error = what + " (response " + std::to_string(parsed.responses.size() + 1) + ")";
+    return parsed;
+  };
+  while (!bytes.empty()) {
+    const std::size_t head_end = bytes.find("\r\n\r\n");
+    if (head_end == std::string_view::npos) return fail("truncated response head");
+    const std::string_view head = bytes.substr(0, head_end + 2);
+    bytes.remove_prefix(head_end + 4);
+
+    HttpResponse response;
+    std::size_t line_end = head.find("\r\n");
+    const std::string_view status_line = head.substr(0, line_end);
+    if (status_line.substr(0, kVersion.size()) != kVersion || status_line.size() < 13 ||
+        !all_digits(status_line.substr(9, 3)) || status_line[12] != ' ') {
+      return fail("bad status line '" + std::string(status_line.substr(0, 40)) + "'");
+    }
+    response.status = std::stoi(std::string(status_line.substr(9, 3)));
+    if (response.status < 100) return fail("bad status code");
+    std::size_t pos = line_end + 2;
+    while (pos < head.size()) {
+      line_end = head.find("\r\n", pos);
+      const std::string_view line = head.substr(pos, line_end - pos);
+      pos = line_end + 2;
+      const std::size_t colon = line.find(':');
+      if (colon == std::string_view::npos || colon == 0 || line.find_first_of(" \t") < colon) {
+        return fail("bad header line '" + std::string(line.substr(0, 40)) + "'");
+      }
+      std::string_view value = line.substr(colon + 1);
+      while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) {
+        value.remove_prefix(1);
+      }
+      response.headers.emplace_back(lower(line.substr(0, colon)), std::string(value));
+    }
+    if (response.interim()) {
+      if (response.status != 100 || !response.headers.empty()) return fail("unexpected 1xx");
+      parsed.responses.push_back(std::move(response));
+      continue;
+    }
+    if (response.count("transfer-encoding") != 0) return fail("Transfer-Encoding in a response");
+    if (response.count("content-length") != 1 || !all_digits(response.header("content-length"))) {
+      return fail("not exactly one numeric Content-Length");
+    }
+    const std::size_t length = std::stoul(response.header("content-length"));
+    const bool bodiless =
+        length > 0 && (bytes.empty() || bytes.substr(0, kVersion.size()) == kVersion);
+    if (!bodiless) {
+      if (bytes.size() < length) return fail("truncated body");
+      response.body = std::string(bytes.substr(0, length));
+      bytes.remove_prefix(length);
+    }
+    parsed.responses.push_back(std::move(response));
+  }
+  return parsed;
+}
+
+}  // namespace cutcalc::testing
