@@ -43,6 +43,11 @@ const char* pointer_of(domain::ErrorCode code) {
       return "/tolerance_mm";
     case ErrorCode::program_too_large:
       return "/step_down_mm";
+    case ErrorCode::program_needs_straight_path:
+      return "/extra_path_mm";
+    case ErrorCode::word_prints_as_zero:
+    case ErrorCode::pass_program_too_large:
+      return "";
     case ErrorCode::not_converged:
       break;
   }

@@ -206,6 +206,18 @@ std::optional<std::string> ObjectReader::optional_choice(
   return std::nullopt;
 }
 
+std::optional<std::string> ObjectReader::optional_string(std::string_view key) {
+  const nlohmann::json* value = find(key);
+  if (value == nullptr) {
+    return std::nullopt;
+  }
+  if (!value->is_string()) {
+    add_error(key, "must be a string");
+    return std::nullopt;
+  }
+  return value->get<std::string>();
+}
+
 std::optional<std::string> ObjectReader::required_choice(
     std::string_view key, std::initializer_list<std::string_view> allowed) {
   if (present() && !has(key)) {

@@ -77,6 +77,8 @@ class ObjectReader {
   // Absent: nullopt, no error. Present: a string that must be one of `allowed`.
   std::optional<std::string> optional_choice(std::string_view key,
                                              std::initializer_list<std::string_view> allowed);
+  // Absent: nullopt, no error. Present: must be a JSON string.
+  std::optional<std::string> optional_string(std::string_view key);
   // A string that must be one of `allowed`.
   std::optional<std::string> required_choice(std::string_view key,
                                              std::initializer_list<std::string_view> allowed);

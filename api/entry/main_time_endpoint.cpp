@@ -1,90 +1,22 @@
 #include "api/entry/main_time_endpoint.h"
 
 #include "api/domain_error_mapping.h"
-#include "api/entry/contour_reader.h"
 #include "api/entry/entry_json.h"
-#include "api/field_reader.h"
+#include "api/entry/main_time_request.h"
+#include "api/program/program_reader.h"
 #include "domain/entry/main_time.h"
+#include "domain/program/pass_program.h"
 
 namespace cutcalc::api::entry {
-namespace {
-
-using domain::entry::MainTimeParams;
-
-constexpr std::int64_t kMaxTeeth = 1000;
-
-domain::entry::Allowance read_allowance(ObjectReader& in) {
-  ObjectReader allowance = in.object("allowance", true);
-  domain::entry::Allowance out;
-  out.width_mm = allowance.required_number("width_mm", Bounds::positive()).value_or(0.0);
-  out.width_of_cut_mm =
-      allowance.required_number("width_of_cut_mm", Bounds::positive()).value_or(0.0);
-  out.depth_mm = allowance.required_number("depth_mm", Bounds::positive()).value_or(0.0);
-  out.depth_of_cut_mm =
-      allowance.required_number("depth_of_cut_mm", Bounds::positive()).value_or(0.0);
-  allowance.reject_unknown_fields();
-  return out;
-}
-
-// The request's fields; meaningful only when the reader recorded no error.
-MainTimeParams read_params(ObjectReader& in) {
-  MainTimeParams params;
-  params.cutter_diameter_mm =
-      in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
-  params.teeth = static_cast<int>(in.required_integer("teeth", 1, kMaxTeeth).value_or(1));
-
-  const auto rpm = in.optional_number("spindle_speed_rpm", Bounds::positive());
-  const auto cutting_speed = in.optional_number("cutting_speed_m_per_min", Bounds::positive());
-  if (rpm) {
-    params.speed = domain::entry::SpindleSpeed{*rpm};
-  } else if (cutting_speed) {
-    params.speed = domain::entry::CuttingSpeed{*cutting_speed};
-  }
-  params.feed_per_tooth_mm =
-      in.required_number("feed_per_tooth_mm", Bounds::positive()).value_or(0);
-  const auto factor = in.optional_number("entry_feed_factor", Bounds::positive(1.0));
-  const auto entry_feed_per_tooth =
-      in.optional_number("entry_feed_per_tooth_mm", Bounds::positive());
-  if (entry_feed_per_tooth) {
-    params.entry_feed = domain::entry::EntryFeedPerTooth{*entry_feed_per_tooth};
-  } else {
-    params.entry_feed = domain::entry::EntryFeedFactor{factor.value_or(0.5)};
-  }
-
-  params.length_mm = in.required_number("length_mm", Bounds::positive()).value_or(0.0);
-  params.extra_path_mm = in.number_or("extra_path_mm", Bounds::non_negative(), 0.0);
-  params.approach_mm = in.number_or("approach_mm", Bounds::non_negative(), 2.0);
-  params.overrun_mm = in.number_or("overrun_mm", Bounds::non_negative(), 2.0);
-  ObjectReader entry = in.object("entry", true);
-  params.entry = read_contour(entry, ContourSide::entry).value_or(domain::entry::Contour{});
-  ObjectReader exit = in.object("exit", true);
-  params.exit = read_contour(exit, ContourSide::exit).value_or(domain::entry::Contour{});
-  params.offset_mm = in.optional_number("offset_mm", Bounds::magnitude());
-  params.allowance = read_allowance(in);
-  in.reject_unknown_fields();
-  return params;
-}
-
-// Which alternatives were sent: checked only once every field is valid on its own.
-std::vector<FieldError> alternative_errors(const ObjectReader& in) {
-  std::vector<FieldError> errors;
-  if (in.has("spindle_speed_rpm") == in.has("cutting_speed_m_per_min")) {
-    errors.push_back({"", "give exactly one of spindle_speed_rpm and cutting_speed_m_per_min"});
-  }
-  if (in.has("entry_feed_factor") && in.has("entry_feed_per_tooth_mm")) {
-    errors.push_back({"", "give at most one of entry_feed_factor and entry_feed_per_tooth_mm"});
-  }
-  return errors;
-}
-
-}  // namespace
 
 HandlerOutcome handle_main_time(const nlohmann::json& body) {
   std::vector<FieldError> errors;
   ObjectReader in = root_reader(body, errors);
-  const auto params = read_params(in);
+  const auto params = read_main_time_params(in);
+  const auto limits = program::read_machine_limits(in);
+  in.reject_unknown_fields();
   if (errors.empty()) {
-    errors = alternative_errors(in);
+    errors = main_time_alternative_errors(in);
   }
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
@@ -93,7 +25,11 @@ HandlerOutcome handle_main_time(const nlohmann::json& body) {
   if (!result.ok()) {
     return to_problem(result.error());
   }
-  return to_json(result.value());
+  nlohmann::json json = to_json(result.value());
+  json["warnings"] = program::to_json(domain::program::limit_warnings(
+      result.value().spindle_speed_rpm, domain::program::setup_feeds_mm_per_min(result.value()),
+      limits));
+  return json;
 }
 
 }  // namespace cutcalc::api::entry

@@ -30,9 +30,12 @@ enum class ErrorCode {
   target_needs_minor_edge_angle,  // target_rz_um with phi1 = 0: Rz = 0 for every feed (R.4)
   cutter_not_smaller_than_bore,   // r >= R (B.5)
   bore_feed_too_large,            // eps >= 1, alpha >= 180 deg, theta'(0) = 0 or no bracket (B.4)
-  tolerance_unreachable,  // polygon arc fit needs more than 1000 biarcs per ellipse arc (P21)
-  program_too_large,      // polygon program over 200 000 arc blocks (section 10)
-  not_converged,          // a numerical procedure failed: a bug, reported as 500
+  tolerance_unreachable,        // polygon arc fit needs more than 1000 biarcs per ellipse arc (P21)
+  program_too_large,            // polygon program over 200 000 arc blocks (section 10)
+  pass_program_too_large,       // pass program over 200 000 blocks (programs.md 1.2)
+  program_needs_straight_path,  // pass program with extra_path_mm > 0 (programs.md 1.2)
+  word_prints_as_zero,          // an F or S word that would print as 0 (programs.md 1.2)
+  not_converged,                // a numerical procedure failed: a bug, reported as 500
 };
 
 struct DomainError {

@@ -1,0 +1,116 @@
+#include "api/program/program_reader.h"
+
+#include <string>
+
+namespace cutcalc::api::program {
+namespace {
+
+namespace model = domain::program;
+
+constexpr double kPassProgramSafeZMm = 10.0;
+constexpr double kPolygonSafeZMm = 5.0;  // the polygon's safe_z_mm default (polygon-holes.md)
+
+model::Dialect read_dialect(ObjectReader& in) {
+  const auto dialect = in.optional_choice("dialect", {"linuxcnc", "fanuc", "sinumerik"});
+  if (dialect == "fanuc") return model::Dialect::fanuc;
+  if (dialect == "sinumerik") return model::Dialect::sinumerik;
+  return model::Dialect::linuxcnc;
+}
+
+void read_identity(ObjectReader& in, model::ProgramOptions& options) {
+  if (in.has("decimals")) {
+    options.decimals = static_cast<int>(
+        in.required_integer("decimals", model::kMinDecimals, model::kMaxDecimals).value_or(4));
+  }
+  if (in.has("program_number")) {
+    if (options.dialect != model::Dialect::fanuc) {
+      in.reject("program_number", "is for dialect fanuc only");
+    } else {
+      options.program_number = static_cast<int>(
+          in.required_integer("program_number", 1, model::kMaxProgramNumber).value_or(1));
+    }
+  }
+  if (const auto name = in.optional_string("name")) {
+    if (const auto problem = model::name_problem(*name, options.dialect)) {
+      in.add_error("name", *problem);
+    } else {
+      options.name = *name;
+    }
+  }
+}
+
+void read_tool_and_machine_state(ObjectReader& in, model::ProgramOptions& options) {
+  if (in.has("tool_number")) {
+    options.tool_number =
+        static_cast<int>(in.required_integer("tool_number", 1, model::kMaxToolNumber).value_or(1));
+  }
+  options.tool_length_offset = in.boolean_or("tool_length_offset", false);
+  if (options.tool_length_offset && !in.has("tool_number")) {
+    in.add_error("tool_length_offset", "needs tool_number");
+  }
+  if (const auto offset =
+          in.optional_choice("work_offset", {"G54", "G55", "G56", "G57", "G58", "G59"})) {
+    options.work_offset = std::stoi(offset->substr(1));
+    if (options.work_offset > model::max_work_offset(options.dialect)) {
+      in.add_error(
+          "work_offset",
+          "sinumerik's work offsets are G54 to G57 (G58 and G59 are programmable offsets)");
+    }
+  }
+  const auto coolant = in.optional_choice("coolant", {"off", "flood", "mist"});
+  options.coolant = coolant == "flood"  ? model::Coolant::flood
+                    : coolant == "mist" ? model::Coolant::mist
+                                        : model::Coolant::off;
+}
+
+void read_motion(ObjectReader& in, ProgramKind kind, model::ProgramOptions& options) {
+  options.safe_z_mm =
+      in.number_or("safe_z_mm", Bounds::positive(),
+                   kind == ProgramKind::polygon ? kPolygonSafeZMm : kPassProgramSafeZMm);
+  if (kind == ProgramKind::polygon) {
+    for (const char* key : {"clearance_mm", "plunge_feed_mm_per_min", "rapid_mm_per_min"}) {
+      if (in.has(key)) in.reject(key, "is for the pass program (POST /v1/main-time/program) only");
+    }
+    return;
+  }
+  options.clearance_mm = in.number_or("clearance_mm", Bounds::non_negative(), 2.0);
+  if (options.clearance_mm > options.safe_z_mm) {
+    in.add_error("clearance_mm", "must not be above safe_z_mm");
+  }
+  options.plunge_feed_mm_per_min = in.optional_number("plunge_feed_mm_per_min", Bounds::positive());
+  options.rapid_mm_per_min = in.number_or("rapid_mm_per_min", Bounds::positive(), 10000.0);
+}
+
+}  // namespace
+
+model::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind) {
+  ObjectReader in = root.object("program", false);
+  model::ProgramOptions options;
+  options.dialect = read_dialect(in);
+  options.units =
+      in.optional_choice("units", {"mm", "inch"}) == "inch" ? model::Units::inch : model::Units::mm;
+  read_identity(in, options);
+  read_tool_and_machine_state(in, options);
+  read_motion(in, kind, options);
+  in.reject_unknown_fields();
+  return options;
+}
+
+model::MachineLimits read_machine_limits(ObjectReader& root) {
+  ObjectReader in = root.object("machine", false);
+  model::MachineLimits limits;
+  limits.max_spindle_rpm = in.optional_number("max_spindle_rpm", Bounds::positive());
+  limits.max_feed_mm_per_min = in.optional_number("max_feed_mm_per_min", Bounds::positive());
+  in.reject_unknown_fields();
+  return limits;
+}
+
+nlohmann::json to_json(const std::vector<model::Warning>& warnings) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& warning : warnings) {
+    list.push_back({{"code", warning.code}, {"detail", warning.detail}});
+  }
+  return list;
+}
+
+}  // namespace cutcalc::api::program

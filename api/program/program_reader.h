@@ -1,0 +1,29 @@
+#pragma once
+// The `program` object and the top-level `machine` limits of the program requests (spec
+// programs.md section 2), and the warnings' JSON form. Errors at /program/<field> and
+// /machine/<field>.
+
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "api/field_reader.h"
+#include "domain/program/program_options.h"
+
+namespace cutcalc::api::program {
+
+enum class ProgramKind {
+  pass_program,  // POST /v1/main-time/program: every member
+  polygon,       // POST /v1/polygon-hole/gcode: no clearance, plunge feed or rapid rate
+};
+
+// The `program` object of `root` (absent: every default of `kind`).
+domain::program::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind);
+
+// The `machine` object of `root` (absent: no limits).
+domain::program::MachineLimits read_machine_limits(ObjectReader& root);
+
+// [{code, detail}, ...]
+nlohmann::json to_json(const std::vector<domain::program::Warning>& warnings);
+
+}  // namespace cutcalc::api::program

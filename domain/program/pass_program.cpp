@@ -1,0 +1,179 @@
+// Spec programs.md section 1: frame G1-G3, passes G4-G7, block sequence, times G8-G11.
+
+#include "domain/program/pass_program.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "domain/program/dialect_writer.h"
+#include "domain/program/program_model.h"
+
+namespace cutcalc::domain::program {
+namespace {
+
+using entry::ContourKind;
+
+// One traverse (G5-G7), program coordinates in mm.
+struct Traverse {
+  double x_start_mm = 0.0;      // X_s,i
+  double x_entry_end_mm = 0.0;  // X_v,i: end of the reduced feed
+  double x_end_mm = 0.0;        // X_e,i: end of the stroke
+  double y_mm = 0.0;            // Y_i
+};
+
+// G5-G7.
+std::vector<Traverse> traverses(const entry::MainTimeParams& params,
+                                const entry::MainTimeResult& main_time) {
+  const std::size_t lateral = main_time.lateral_passes.size();
+  const bool strips = params.entry.kind == ContourKind::straight && lateral > 1;
+  const double cot_alpha = 1.0 / std::tan(params.entry.angle_deg * std::numbers::pi / 180.0);
+  std::vector<Traverse> out;
+  out.reserve(lateral);
+  for (std::size_t i = 0; i < lateral; ++i) {
+    const entry::LateralPass& pass = main_time.lateral_passes[i];
+    Traverse t;
+    const double strip_side_mm =
+        static_cast<double>(i) * params.allowance.width_of_cut_mm;  // Y_(i-1)
+    t.x_start_mm = (strips ? strip_side_mm * cot_alpha : 0.0) - pass.start.x_mm;
+    t.x_entry_end_mm = t.x_start_mm + pass.entry_length_mm;
+    t.x_end_mm = t.x_start_mm + pass.working_stroke_mm;
+    t.y_mm = pass.axis_y_mm;
+    out.push_back(t);
+  }
+  return out;
+}
+
+// A printed number that reads as zero ("0.000", "0").
+bool prints_as_zero(const std::string& text) {
+  return text.find_first_not_of("0.") == std::string::npos;
+}
+
+double distance(const Axes& a, const Axes& b) {
+  return std::hypot(a.x_mm.value_or(0.0) - b.x_mm.value_or(0.0),
+                    a.y_mm.value_or(0.0) - b.y_mm.value_or(0.0),
+                    a.z_mm.value_or(0.0) - b.z_mm.value_or(0.0));
+}
+
+std::string header_comment(const entry::MainTimeResult& main_time, std::size_t passes,
+                           const ProgramOptions& options) {
+  const int decimals = decimals_of(options);
+  return "N1 X N2 = " + std::to_string(main_time.lateral_passes.size()) + " X " +
+         std::to_string(main_time.depth_passes_mm.size()) + " = " + std::to_string(passes) +
+         " PASSES, MAIN TIME " + format_fixed(main_time.main_time_min, decimals) + " MIN";
+}
+
+}  // namespace
+
+std::vector<double> setup_feeds_mm_per_min(const entry::MainTimeResult& main_time) {
+  return {main_time.entry_feed_mm_per_min, main_time.feed_mm_per_min};
+}
+
+Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
+                                       const entry::MainTimeResult& main_time,
+                                       const ProgramOptions& options, const MachineLimits& limits) {
+  if (params.extra_path_mm > 0.0) {
+    return make_error(ErrorCode::program_needs_straight_path,
+                      "a program needs a straight path: extra_path_mm must be 0");
+  }
+  const std::vector<Traverse> passes = traverses(params, main_time);
+  const std::size_t levels = main_time.depth_passes_mm.size();
+  const double blocks =
+      16.0 + 6.0 * static_cast<double>(passes.size()) * static_cast<double>(levels);
+  if (blocks > kMaxProgramBlocks) {
+    return make_error(ErrorCode::pass_program_too_large,
+                      "the program would have more than 200000 blocks");
+  }
+
+  const double n = main_time.spindle_speed_rpm;
+  const double s_m1 = main_time.entry_feed_mm_per_min;
+  const double s_m2 = main_time.feed_mm_per_min;
+  const double plunge = options.plunge_feed_mm_per_min.value_or(s_m1);
+  const int decimals = decimals_of(options);
+  for (const double feed : {plunge, s_m1, s_m2}) {
+    if (prints_as_zero(format_fixed(to_program_units(feed, options.units), decimals))) {
+      return make_error(ErrorCode::word_prints_as_zero,
+                        "a feed is too small to print with this many decimals");
+    }
+  }
+  if (prints_as_zero(spindle_text(n, options.dialect, decimals))) {
+    return make_error(ErrorCode::word_prints_as_zero,
+                      "the spindle speed is too small to print with this many decimals");
+  }
+
+  PassProgram out;
+  out.passes = static_cast<int>(passes.size() * levels);
+  std::vector<double> feeds = setup_feeds_mm_per_min(main_time);
+  feeds.push_back(plunge);
+  out.warnings = limit_warnings(n, feeds, limits);
+  if (options.dialect == Dialect::fanuc && std::fabs(std::floor(n + 0.5) - n) > 1e-9) {
+    out.warnings.push_back(
+        {"spindle_speed_rounded",
+         "a Fanuc S word takes no decimals: S" + spindle_text(n, options.dialect, decimals) +
+             " for n = " + format_fixed(n, 6) + " rpm (feeds and times use the exact n)"});
+  }
+
+  ProgramModel model;
+  model.comments = {
+      "CUTCALC PASS PROGRAM", header_comment(main_time, passes.size() * levels, options),
+      std::string("PROGRAM UNITS ") + (options.units == Units::inch ? "INCH" : "MM") +
+          ", X ALONG THE FEED FROM THE ENTRY EDGE, Y FROM THE SIDE EDGE, Z0 TOP FACE"};
+  for (const Warning& warning : out.warnings) {
+    model.comments.push_back("WARNING " + warning.code + ": " + warning.detail);
+  }
+
+  model.blocks.reserve(static_cast<std::size_t>(blocks));
+  model.blocks.emplace_back(
+      SafeStart{options.tool_number, options.tool_length_offset, options.safe_z_mm});
+  model.blocks.emplace_back(SpindleOn{n});
+  if (options.coolant != Coolant::off) model.blocks.emplace_back(CoolantOn{options.coolant});
+
+  double z_level = 0.0;  // Z_(j-1)
+  double rapid_mm = 0.0;
+  Axes at;  // where the tool is, after the first G0 X Y
+  bool positioned = false;
+  for (const double depth : main_time.depth_passes_mm) {
+    const double z = z_level - depth;  // G4
+    for (const Traverse& t : passes) {
+      const Axes above{t.x_start_mm, t.y_mm, options.safe_z_mm};
+      if (positioned) rapid_mm += distance(at, above);
+      positioned = true;
+      model.blocks.emplace_back(Rapid{{t.x_start_mm, t.y_mm, std::nullopt}});
+      const double approach_z = z_level + options.clearance_mm;
+      rapid_mm += options.safe_z_mm - approach_z;
+      model.blocks.emplace_back(Rapid{{std::nullopt, std::nullopt, approach_z}});
+      model.blocks.emplace_back(Feed{{std::nullopt, std::nullopt, z}, plunge});
+      out.plunge_time_min += (approach_z - z) / plunge;  // G9
+      model.blocks.emplace_back(Feed{{t.x_entry_end_mm, std::nullopt, std::nullopt}, s_m1});
+      const std::string entry_end =
+          format_fixed(to_program_units(t.x_entry_end_mm, options.units), decimals);
+      const std::string stroke_end =
+          format_fixed(to_program_units(t.x_end_mm, options.units), decimals);
+      if (stroke_end != entry_end) {
+        model.blocks.emplace_back(Feed{{t.x_end_mm, std::nullopt, std::nullopt}, s_m2});
+      }
+      model.blocks.emplace_back(Rapid{{std::nullopt, std::nullopt, options.safe_z_mm}});
+      rapid_mm += options.safe_z_mm - z;
+      at = Axes{t.x_end_mm, t.y_mm, options.safe_z_mm};
+    }
+    z_level = z;
+  }
+  model.blocks.emplace_back(SpindleOff{});
+  if (options.coolant != Coolant::off) model.blocks.emplace_back(CoolantOff{});
+
+  // G8: the passes' own feed times, summed over the depth levels, are the main time (E35).
+  for (std::size_t j = 0; j < levels; ++j) {
+    for (const entry::LateralPass& pass : main_time.lateral_passes) {
+      out.working_time_min +=
+          pass.entry_length_mm / s_m1 + (pass.working_stroke_mm - pass.entry_length_mm) / s_m2;
+    }
+  }
+  out.rapid_time_min = rapid_mm / options.rapid_mm_per_min;                              // G10
+  out.cycle_time_min = out.working_time_min + out.plunge_time_min + out.rapid_time_min;  // G11
+  out.not_modelled = {"acceleration", "tool_change", "spindle_and_coolant_start",
+                      "first_positioning_move", "non_linear_rapids"};
+  out.program = write_program(model, options);
+  out.file_name = file_name(options);
+  return out;
+}
+
+}  // namespace cutcalc::domain::program

@@ -1,0 +1,40 @@
+#pragma once
+// The pass program of spec programs.md section 1: the Vitebsk passes of a main-time computation
+// (entry-and-main-time.md E24-E36) as a machine program, with the feed switching from S_m1 to S_m2
+// exactly at the end of each entry section, and its times (G8-G11). Units: mm, mm/min, minutes.
+
+#include <string>
+#include <vector>
+
+#include "domain/common/result.h"
+#include "domain/entry/main_time.h"
+#include "domain/program/program_options.h"
+
+namespace cutcalc::domain::program {
+
+// The size cap of section 1.2 (as the polygon's): at most this many blocks.
+inline constexpr double kMaxProgramBlocks = 200000;
+
+struct PassProgram {
+  std::string program;                    // LF line ends
+  std::string file_name;                  // section 3 table
+  int passes = 0;                         // N1 x N2
+  double working_time_min = 0.0;          // G8 (= main_time_min, E35)
+  double plunge_time_min = 0.0;           // G9
+  double rapid_time_min = 0.0;            // G10
+  double cycle_time_min = 0.0;            // G11
+  std::vector<std::string> not_modelled;  // what the times leave out
+  std::vector<Warning> warnings;          // section 5 order
+};
+
+// G1-G11 on a computed main time. Errors: program_needs_straight_path (L1 > 0), word_prints_as_zero
+// (an F or S word), program_too_large (over kMaxProgramBlocks).
+Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
+                                       const entry::MainTimeResult& main_time,
+                                       const ProgramOptions& options, const MachineLimits& limits);
+
+// The feeds a main-time setup uses (S_m1, S_m2, and the plunge feed when given), for the limit
+// warnings of section 5.
+std::vector<double> setup_feeds_mm_per_min(const entry::MainTimeResult& main_time);
+
+}  // namespace cutcalc::domain::program

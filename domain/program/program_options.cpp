@@ -1,0 +1,104 @@
+#include "domain/program/program_options.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+
+namespace cutcalc::domain::program {
+namespace {
+
+bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+std::string number_text(double value) {
+  std::array<char, 64> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.6g", value);
+  return buffer.data();
+}
+
+}  // namespace
+
+int default_decimals(Dialect dialect, Units units) {
+  const int mm = dialect == Dialect::linuxcnc ? 4 : 3;
+  return units == Units::inch ? mm + 1 : mm;
+}
+
+int decimals_of(const ProgramOptions& options) {
+  return options.decimals.value_or(default_decimals(options.dialect, options.units));
+}
+
+std::optional<std::string> name_problem(std::string_view name, Dialect dialect) {
+  const bool shaped = !name.empty() && name.size() <= 24 && is_upper(name.front()) &&
+                      std::all_of(name.begin(), name.end(),
+                                  [](char c) { return is_upper(c) || is_digit(c) || c == '_'; });
+  if (!shaped) return "must be 1 to 24 of A-Z, 0-9 and _, starting with a letter";
+  // Device names of the file systems the program may be copied through.
+  for (const std::string_view reserved : {"CON", "PRN", "AUX", "NUL"}) {
+    if (name == reserved) return "must not be a reserved device name (" + std::string(name) + ")";
+  }
+  if (name.size() == 4 && (name.substr(0, 3) == "COM" || name.substr(0, 3) == "LPT") &&
+      name[3] >= '1' && name[3] <= '9') {
+    return "must not be a reserved device name (" + std::string(name) + ")";
+  }
+  if (dialect == Dialect::sinumerik) {
+    if (name.size() < 2 || !is_upper(name[1])) return "must start with two letters (sinumerik)";
+    for (const std::string_view prefix : {"CYCLE", "CUST_", "GROUP_", "S_", "E_", "F_", "CC_"}) {
+      if (name.substr(0, prefix.size()) == prefix) {
+        return "must not start with " + std::string(prefix) + " (reserved by sinumerik)";
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+int max_work_offset(Dialect dialect) { return dialect == Dialect::sinumerik ? 57 : 59; }
+
+std::string_view dialect_name(Dialect dialect) {
+  switch (dialect) {
+    case Dialect::fanuc:
+      return "fanuc";
+    case Dialect::sinumerik:
+      return "sinumerik";
+    case Dialect::linuxcnc:
+      break;
+  }
+  return "linuxcnc";
+}
+
+std::string_view units_name(Units units) { return units == Units::inch ? "inch" : "mm"; }
+
+std::string file_name(const ProgramOptions& options) {
+  switch (options.dialect) {
+    case Dialect::fanuc: {
+      std::array<char, 16> number{};
+      std::snprintf(number.data(), number.size(), "O%04d.nc", options.program_number);
+      return number.data();
+    }
+    case Dialect::sinumerik:
+      return options.name + ".MPF";
+    case Dialect::linuxcnc:
+      break;
+  }
+  return options.name + ".ngc";
+}
+
+std::vector<Warning> limit_warnings(double spindle_rpm, const std::vector<double>& feeds_mm_per_min,
+                                    const MachineLimits& limits) {
+  std::vector<Warning> warnings;
+  if (limits.max_spindle_rpm && spindle_rpm > *limits.max_spindle_rpm) {
+    warnings.push_back({"spindle_over_limit", "spindle speed " + number_text(spindle_rpm) +
+                                                  " rpm is above the machine's " +
+                                                  number_text(*limits.max_spindle_rpm) + " rpm"});
+  }
+  if (limits.max_feed_mm_per_min && !feeds_mm_per_min.empty()) {
+    const double highest = *std::max_element(feeds_mm_per_min.begin(), feeds_mm_per_min.end());
+    if (highest > *limits.max_feed_mm_per_min) {
+      warnings.push_back(
+          {"feed_over_limit", "feed " + number_text(highest) + " mm/min is above the machine's " +
+                                  number_text(*limits.max_feed_mm_per_min) + " mm/min"});
+    }
+  }
+  return warnings;
+}
+
+}  // namespace cutcalc::domain::program

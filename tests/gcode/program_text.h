@@ -1,0 +1,31 @@
+#pragma once
+// Reading machine programs as text, independently of domain/program: the translation of a fanuc
+// or sinumerik program to LinuxCNC (spec programs.md section 3, "Check by translation"), and the
+// G0/G1 moves with their printed X Y Z F words, for the checks of section 1.3 on the text.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cutcalc::test::gcode {
+
+// fanuc -> linuxcnc: the O line dropped, two-digit G and M words shortened (G01 -> G1, M03 -> M3);
+// sinumerik -> linuxcnc: `;` comments -> `( )`, G710/G700 -> G21/G20, D1/D0 dropped.
+// `dialect` is "linuxcnc" (returned as it is), "fanuc" or "sinumerik".
+std::string translate_to_linuxcnc(std::string_view program, std::string_view dialect);
+
+struct TextMove {
+  bool feed = false;           // G1 (else G0)
+  double x = 0, y = 0, z = 0;  // after the move, program units
+  double from_x = 0, from_y = 0, from_z = 0;
+  double f = 0;  // the modal F in force (printed)
+};
+
+// The G0/G1 moves of a program in the LinuxCNC or translated form, from its printed words
+// (absolute, G90; the position starts at 0 0 0). Comments are skipped.
+std::vector<TextMove> moves_of(std::string_view program);
+
+// The words of every block outside comments, upper case, one vector per line.
+std::vector<std::vector<std::string>> words_of(std::string_view program, std::string_view dialect);
+
+}  // namespace cutcalc::test::gcode
