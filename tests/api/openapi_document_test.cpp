@@ -339,7 +339,7 @@ TEST(OpenApiDocument, EveryOperationHasAUniqueOperationIdSummaryDescriptionAndTa
     ASSERT_TRUE(o.op->contains("tags")) << id;
     EXPECT_FALSE((*o.op)["tags"].empty()) << id;
   }
-  EXPECT_EQ(ids.size(), 13U);  // 6 calculations, 5 operations, the web page and its assets
+  EXPECT_EQ(ids.size(), 14U);  // 7 calculations, 5 operations, the web page and its assets
 }
 
 TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {
@@ -362,7 +362,7 @@ TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {
           << o.path << " " << status;
     }
   }
-  EXPECT_EQ(json_body_operations, 6);
+  EXPECT_EQ(json_body_operations, 7);
 }
 
 TEST(OpenApiDocument, EveryResponseCarriesXRequestIdAndEveryOperationAcceptsIt) {

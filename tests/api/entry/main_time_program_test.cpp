@@ -1,0 +1,265 @@
+// POST /v1/main-time/program over HTTP: every case of shared/reference/main-time-program.json
+// (values, warning codes, error pointers, the contract), the plain-text answer, the text rules of
+// every dialect (spec programs.md section 3) on every reference program, and the errors the
+// reference file does not cover. rs274 acceptance and the times on the text: tests/gcode.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/project_contract.h"
+#include "support/reference_replay.h"
+
+namespace cutcalc::testing {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kPath = "/v1/main-time/program";
+
+ToleranceFn file_tolerance(const json& tolerance) {
+  const double abs_min = tolerance.value("abs_min", 1e-9);
+  const double rel = tolerance.value("rel", 1e-9);
+  return [abs_min, rel](const std::string&, double want) {
+    return std::max(abs_min, rel * std::fabs(want));
+  };
+}
+
+std::multiset<std::string> warning_codes(const json& body) {
+  std::multiset<std::string> codes;
+  for (const json& warning : body.at("warnings"))
+    codes.insert(warning.at("code").get<std::string>());
+  return codes;
+}
+
+class ProgramReferenceCase : public ::testing::TestWithParam<ReferenceCase> {};
+
+TEST_P(ProgramReferenceCase, ServiceAnswersAsTheReference) {
+  const ReferenceCase& reference = GetParam();
+  const JsonReply reply =
+      replay_reference_case(reference, file_tolerance(reference.data.contains("tolerance")
+                                                          ? reference.data.at("tolerance")
+                                                          : json::object()));
+  const json& expect = reference.data.at("expect");
+  if (expect.contains("warning_codes")) {
+    const auto wanted = expect.at("warning_codes").get<std::multiset<std::string>>();
+    EXPECT_EQ(warning_codes(reply.json), wanted);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(MainTimeProgram, ProgramReferenceCase,
+                         ::testing::ValuesIn(load_cases("main-time-program.json")),
+                         reference_case_name);
+
+TEST(MainTimeProgramReferenceFile, HoldsTheExpectedNumberOfCases) {
+  EXPECT_GE(load_cases("main-time-program.json").size(), 30U);
+}
+
+json worked_example() {
+  for (const ReferenceCase& c : load_cases("main-time-program.json")) {
+    if (c.data.at("id") == "prog-P-WORKED") return c.data.at("request");
+  }
+  ADD_FAILURE() << "prog-P-WORKED is missing";
+  return {};
+}
+
+TEST(MainTimeProgram, PlainTextAnswerIsTheProgramWithTheDialectsFileName) {
+  json request = worked_example();
+  request["program"] = {{"dialect", "sinumerik"}, {"name", "FACE_01"}};
+  const JsonReply as_json = post(kPath, request.dump());
+  auto client = TestServer::shared().client();
+  const auto reply =
+      client->Post(kPath, {{"Accept", "text/plain"}}, request.dump(), "application/json");
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->status, 200);
+  EXPECT_EQ(reply->get_header_value("Content-Type"), "text/plain; charset=us-ascii");
+  EXPECT_EQ(reply->get_header_value("Content-Disposition"), "attachment; filename=\"FACE_01.MPF\"");
+  EXPECT_EQ(reply->body, as_json.json.at("program").get<std::string>());
+}
+
+TEST(MainTimeProgram, WorkingTimeIsTheMainTimeOfMainTime) {
+  json main_time_request = worked_example();
+  main_time_request.erase("program");
+  const JsonReply main_time = post("/v1/main-time", main_time_request.dump());
+  const JsonReply program = post(kPath, worked_example().dump());
+  ASSERT_EQ(program.status, 200);
+  EXPECT_EQ(program.json.at("main_time"), main_time.json);
+  EXPECT_NEAR(program.json.at("working_time_min").get<double>(),
+              main_time.json.at("main_time_min").get<double>(), 1e-12);
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) lines.push_back(line);
+  return lines;
+}
+
+// The rules of section 3 that hold for every program of `dialect`.
+void expect_text_rules(const std::string& program, const std::string& dialect) {
+  SCOPED_TRACE(dialect + " program:\n" + program);
+  const auto lines = lines_of(program);
+  ASSERT_GE(lines.size(), 8U);
+  EXPECT_EQ(program.back(), '\n');
+  EXPECT_TRUE(std::all_of(program.begin(), program.end(),
+                          [](char c) { return c == '\n' || (c >= 0x20 && c < 0x7f); }));
+  const std::regex minus_zero(R"([A-Z]-0(\.0+)?( |$))");
+  const std::regex real_without_point(R"(\b[XYZF]-?[0-9]+( |$))");
+  const std::regex m_word(R"((^| )M[0-9]+)");
+  const bool semicolon_comments = dialect == "sinumerik";
+  std::size_t o_words = 0;
+  for (const std::string& line : lines) {
+    const bool comment = semicolon_comments ? line.rfind(';', 0) == 0 : line.rfind('(', 0) == 0;
+    if (comment) {
+      if (dialect == "fanuc") {
+        EXPECT_EQ(line.find_first_of("abcdefghijklmnopqrstuvwxyz"), std::string::npos)
+            << "fanuc comments are upper case: " << line;
+      }
+      const std::string text =
+          semicolon_comments ? line.substr(1) : line.substr(1, line.size() - 2);
+      EXPECT_EQ(text.find_first_of("();%"), std::string::npos) << line;
+      continue;
+    }
+    if (line == "%") continue;
+    if (line.rfind('O', 0) == 0) ++o_words;
+    EXPECT_FALSE(std::regex_search(line, minus_zero)) << "-0 in " << line;
+    EXPECT_FALSE(std::regex_search(line, real_without_point)) << "no decimal point in " << line;
+    const auto m_words = std::distance(std::sregex_iterator(line.begin(), line.end(), m_word),
+                                       std::sregex_iterator());
+    EXPECT_LE(m_words, 1) << "more than one M word in " << line;
+    EXPECT_EQ(line.find_first_of("abcdefghijklmnopqrstuvwxyz,"), std::string::npos) << line;
+  }
+  if (dialect == "fanuc") {
+    EXPECT_EQ(lines[0], "%");
+    EXPECT_TRUE(std::regex_match(lines[1], std::regex(R"(O[0-9]{4} \([A-Z][A-Z0-9_]*\))")))
+        << lines[1];
+    EXPECT_EQ(o_words, 1U);
+    const auto units = std::find_if(lines.begin(), lines.end(),
+                                    [](const std::string& l) { return l.rfind('G', 0) == 0; });
+    ASSERT_NE(units, lines.end());
+    EXPECT_TRUE(*units == "G21" || *units == "G20") << "the units alone, first: " << *units;
+    EXPECT_TRUE(std::regex_search(program, std::regex(R"(\nS[0-9]+ M03\n)"))) << "integer S";
+    EXPECT_FALSE(std::regex_search(program, std::regex(R"((^|[ \n])[GM][0-9]( |\n))")))
+        << "one-digit G or M word";
+    EXPECT_EQ(lines[lines.size() - 2], "M30");
+    EXPECT_EQ(lines.back(), "%");
+  } else if (dialect == "sinumerik") {
+    EXPECT_TRUE(lines[0].rfind("; ", 0) == 0);
+    EXPECT_TRUE(program.find("G710") != std::string::npos ||
+                program.find("G700") != std::string::npos);
+    EXPECT_EQ(program.find_first_of("%()"), std::string::npos);
+    EXPECT_EQ(lines.back(), "M30");
+  } else {
+    EXPECT_EQ(lines[0], "%");
+    EXPECT_EQ(lines[lines.size() - 2], "M30");
+    EXPECT_EQ(lines.back(), "%");
+  }
+}
+
+TEST(MainTimeProgram, EveryReferenceProgramKeepsTheTextRulesOfEveryDialectAndUnit) {
+  int checked = 0;
+  for (const ReferenceCase& reference : load_cases("main-time-program.json")) {
+    if (reference.data.at("expect").at("status") != 200) continue;
+    for (const char* dialect : {"linuxcnc", "fanuc", "sinumerik"}) {
+      for (const char* units : {"mm", "inch"}) {
+        json request = reference.data.at("request");
+        json program = {{"dialect", dialect},
+                        {"units", units},
+                        {"tool_number", 7},
+                        {"tool_length_offset", true},
+                        {"coolant", "mist"}};
+        request["program"] = program;
+        const JsonReply reply = post(kPath, request.dump());
+        ASSERT_EQ(reply.status, 200) << reply.body;
+        expect_text_rules(reply.json.at("program").get<std::string>(), dialect);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GE(checked, 60);
+}
+
+TEST(MainTimeProgram, WarningsFollowTheSpecsOrderAndAreCommentLines) {
+  json request = worked_example();
+  request["machine"] = {{"max_spindle_rpm", 500}, {"max_feed_mm_per_min", 100}};
+  request["program"] = {{"dialect", "fanuc"}};
+  const JsonReply reply = post(kPath, request.dump());
+  ASSERT_EQ(reply.status, 200);
+  const json& warnings = reply.json.at("warnings");
+  ASSERT_EQ(warnings.size(), 2U);
+  EXPECT_EQ(warnings[0].at("code"), "spindle_over_limit");
+  EXPECT_EQ(warnings[1].at("code"), "feed_over_limit");
+  const std::string program = reply.json.at("program").get<std::string>();
+  EXPECT_LT(program.find("(WARNING SPINDLE_OVER_LIMIT"), program.find("(WARNING FEED_OVER_LIMIT"));
+  EXPECT_LT(program.find("(WARNING FEED_OVER_LIMIT"), program.find("G21"));
+}
+
+TEST(MainTime, AnswersMachineLimitWarningsAndAnEmptyListWithoutLimits) {
+  json request = worked_example();
+  request.erase("program");
+  EXPECT_EQ(post("/v1/main-time", request.dump()).json.at("warnings"), json::array());
+  request["machine"] = {{"max_feed_mm_per_min", 300}};
+  const JsonReply reply = post("/v1/main-time", request.dump());
+  ASSERT_EQ(reply.status, 200);
+  ASSERT_EQ(reply.json.at("warnings").size(), 1U);
+  EXPECT_EQ(reply.json.at("warnings")[0].at("code"), "feed_over_limit");
+}
+
+void expect_problem_at(const json& request, const std::string& pointer) {
+  const JsonReply reply = post(kPath, request.dump());
+  EXPECT_EQ(reply.status, 422) << reply.body;
+  EXPECT_TRUE(problem_names_pointer(reply.json, pointer)) << pointer << ": " << reply.body;
+  for (const auto& violation : test_support::project_contract().check_response(
+           "post", kPath, reply.status, reply.content_type, reply.json)) {
+    ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
+  }
+}
+
+TEST(MainTimeProgram, RefusesWhatSection6Refuses) {
+  const json base = worked_example();
+  const auto with = [&](const json& program) {
+    json request = base;
+    request["program"] = program;
+    return request;
+  };
+  expect_problem_at(with({{"dialect", "sinumerik"}, {"work_offset", "G58"}}),
+                    "/program/work_offset");
+  expect_problem_at(with({{"coolant", "fog"}}), "/program/coolant");
+  expect_problem_at(with({{"dialect", "fanuc"}, {"program_number", 8000}}),
+                    "/program/program_number");
+  expect_problem_at(with({{"name", "cutcalc"}}), "/program/name");
+  expect_problem_at(with({{"dialect", "sinumerik"}, {"name", "CYCLE800"}}), "/program/name");
+  expect_problem_at(with({{"dialect", "sinumerik"}, {"name", "A1"}}), "/program/name");
+  expect_problem_at(with({{"name", "COM3"}}), "/program/name");
+  expect_problem_at(with({{"tool_number", 2.5}}), "/program/tool_number");
+  expect_problem_at(with({{"safe_z_mm", 0}}), "/program/safe_z_mm");
+  expect_problem_at(with({{"clearance_mm", -1}}), "/program/clearance_mm");
+  expect_problem_at(with({{"plunge_feed_mm_per_min", 0}}), "/program/plunge_feed_mm_per_min");
+  expect_problem_at(with({{"tool_length_offset", "yes"}}), "/program/tool_length_offset");
+  json machine = base;
+  machine["machine"] = {{"max_feed_mm_per_min", -5}};
+  expect_problem_at(machine, "/machine/max_feed_mm_per_min");
+  // A feed that prints as zero: S_m1 = 1e-6 S_m2 = 0.0004 mm/min at 3 decimals.
+  json tiny = with({{"dialect", "fanuc"}});
+  tiny["entry_feed_factor"] = 0.000001;
+  expect_problem_at(tiny, "");
+  // Over 200 000 blocks: 10 000 lateral x 10 depth passes.
+  json huge = base;
+  huge["program"] = json::object();
+  huge["entry"] = {{"contour", "straight"}, {"width_mm", 100}};
+  huge["exit"] = {{"contour", "straight"}, {"width_mm", 100}};
+  huge["cutter_diameter_mm"] = 10;
+  huge["allowance"] = {
+      {"width_mm", 100}, {"width_of_cut_mm", 0.01}, {"depth_mm", 10}, {"depth_of_cut_mm", 1}};
+  expect_problem_at(huge, "");
+}
+
+}  // namespace
+}  // namespace cutcalc::testing
