@@ -197,12 +197,15 @@ cases = []  # (name, kind, method, path, accept, body)
 for path in sorted(glob.glob(os.path.join(reference, "*.json"))):
     doc = json.load(open(path))
     endpoint = doc["endpoint"]
-    first = next((c for c in doc["cases"] if c.get("expect", {}).get("status") == 200), None)
+    # The pass program is measured on the spec's worked example (2 x 3 passes).
+    preferred = {"/v1/main-time/program": "prog-P-WORKED"}.get(endpoint)
+    first = next((c for c in doc["cases"] if c.get("expect", {}).get("status") == 200
+                  and (preferred is None or c.get("id") == preferred)), None)
     if first is None:
         sys.exit(f"http_bench: no case expecting 200 in {path}")
     body = json.dumps(first["request"], separators=(",", ":"))
     name = endpoint.removeprefix("/v1/").replace("/", "-")
-    if endpoint == "/v1/polygon-hole/gcode":
+    if endpoint in ("/v1/polygon-hole/gcode", "/v1/main-time/program"):  # a text form too
         cases.append((name + ".json", "post", "POST", endpoint, "-", body))
         cases.append((name + ".text", "post", "POST", endpoint, "text/plain", body))
     else:

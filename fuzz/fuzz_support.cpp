@@ -524,6 +524,95 @@ std::optional<std::string> bad_program_text(std::string_view program) {
   return std::nullopt;
 }
 
+// The rules of spec programs.md section 3 for a pass program in any dialect: ASCII lines; comments
+// `( ... )` (linuxcnc, fanuc: closed, nothing nested) or `; ...` (sinumerik); code words
+// `<letter><value>` in the order G X Y Z I J C H F S T D M, one M word per block; G M H T D whole
+// numbers, every other letter a real number with a decimal point (fanuc S: a whole number), never
+// -0; `%` first and last (linuxcnc, fanuc) or nowhere (sinumerik); fanuc's `O{4 digits} (NAME)`
+// its only O word.
+std::optional<std::string> bad_dialect_program_text(std::string_view program) {
+  if (program.empty() || program.back() != '\n') {
+    return "the program is empty or does not end with a newline";
+  }
+  for (const char c : program) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c != '\n' && (byte < 0x20 || byte > 0x7e)) {
+      return "the program has a byte outside printable US-ASCII: " + std::to_string(byte);
+    }
+  }
+  const bool sinumerik = starts_with(program, "; ");
+  const bool fanuc = starts_with(program, "%\nO");
+  if (sinumerik ? program.find('%') != std::string_view::npos
+                : !starts_with(program, "%\n") || !ends_with(program, "\nM30\n%\n")) {
+    return std::string("the program's % lines are wrong for its dialect");
+  }
+  const auto whole = [](std::string_view text) {
+    return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+      return std::isdigit(static_cast<unsigned char>(c)) != 0;
+    });
+  };
+  std::size_t line_number = 0;
+  std::size_t begin = 0;
+  while (begin < program.size()) {
+    const std::size_t end = program.find('\n', begin);
+    std::string_view line = program.substr(begin, end - begin);
+    begin = end + 1;
+    const std::string where =
+        "line " + std::to_string(++line_number) + " \"" + std::string(line.substr(0, 200)) + "\": ";
+    if (line == "%" && !sinumerik) continue;
+    if (fanuc && line_number == 2) {  // O{number} (NAME)
+      if (line.size() < 8 || line[0] != 'O' || !whole(line.substr(1, 4)) ||
+          line.substr(5, 2) != " (" || !ends_with(line, ")")) {
+        return where + "not the fanuc O line";
+      }
+      continue;
+    }
+    if (sinumerik ? starts_with(line, ";") : starts_with(line, "(")) {
+      const std::string_view text = sinumerik ? line.substr(1) : line.substr(1, line.size() - 2);
+      if ((!sinumerik && !ends_with(line, ")")) ||
+          text.find_first_of("();%") != std::string_view::npos) {
+        return where + "a comment that breaks the dialect's comment rules";
+      }
+      continue;
+    }
+    constexpr std::string_view kOrder = "GXYZIJCHFSTDM";
+    std::size_t previous_rank = 0;
+    std::size_t m_words = 0;
+    std::size_t word_begin = 0;
+    while (word_begin <= line.size()) {
+      std::size_t word_end = line.find(' ', word_begin);
+      if (word_end == std::string_view::npos) word_end = line.size();
+      const std::string_view word = line.substr(word_begin, word_end - word_begin);
+      word_begin = word_end + 1;
+      const std::size_t rank = word.empty() ? std::string_view::npos : kOrder.find(word.front());
+      if (rank == std::string_view::npos || rank < previous_rank) {
+        return where + "a word out of G X Y Z I J C H F S T D M or of that order: \"" +
+               std::string(word) + "\"";
+      }
+      previous_rank = rank;
+      std::string_view value = word.substr(1);
+      m_words += word.front() == 'M' ? 1 : 0;
+      const bool integer_word =
+          std::string_view("GMHTD").find(word.front()) != std::string_view::npos ||
+          (fanuc && word.front() == 'S');
+      if (integer_word ? !whole(value) : false)
+        return where + "not a whole number: " + std::string(word);
+      if (integer_word) continue;
+      if (starts_with(value, "-")) value.remove_prefix(1);
+      const auto dot = value.find('.');
+      if (dot == std::string_view::npos || !whole(value.substr(0, dot)) ||
+          !whole(value.substr(dot + 1))) {
+        return where + "a real number without its decimal point: " + std::string(word);
+      }
+      if (word[1] == '-' && value.find_first_not_of("0.") == std::string_view::npos) {
+        return where + "a -0: " + std::string(word);
+      }
+    }
+    if (m_words > 1) return where + "more than one M word in a block";
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> broken_promise(std::string_view path, std::string_view request_body,
                                           const api::ApiResponse& response, Form form) {
   const int status = response.status;
@@ -543,7 +632,9 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
     if (!has_attachment) {
       return "the text/plain program has no Content-Disposition: attachment";
     }
-    if (auto why = bad_program_text(response.body)) {
+    const bool pass_program = path == "/v1/main-time/program";
+    if (auto why = pass_program ? bad_dialect_program_text(response.body)
+                                : bad_program_text(response.body)) {
       return why;
     }
 #ifdef CUTCALC_FUZZ_OPENAPI_PATH
@@ -574,6 +665,11 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
   if (status != 200) {
     if (auto why = problem_shape(body, status)) {
       return why;
+    }
+  } else if (path == "/v1/main-time/program" && body.contains("program") &&
+             body["program"].is_string()) {
+    if (auto why = bad_dialect_program_text(body["program"].get<std::string>())) {
+      return "the JSON answer's program: " + *why;
     }
   }
 #ifdef CUTCALC_FUZZ_OPENAPI_PATH

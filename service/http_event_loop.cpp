@@ -57,23 +57,23 @@ struct EventLoopEngine::Connection {
       : counted(open), fd(std::move(socket)), addresses(fd.get()), requests_left(requests) {}
 
   [[nodiscard]] std::string_view unread() const {
-    return std::string_view(input).substr(input_offset);
+    return {input.data() + input_begin, input_end - input_begin};
   }
   void consume(std::size_t bytes) {
-    input_offset += bytes;
-    if (input_offset == input.size()) {
-      input.clear();
-      input_offset = 0;
-    }
+    input_begin += bytes;
+    if (input_begin == input_end) input_begin = input_end = 0;
   }
+  void drop_input() { input_begin = input_end = 0; }
   [[nodiscard]] bool has_output() const { return output_offset < output.size(); }
   [[nodiscard]] std::size_t pending_output() const { return output.size() - output_offset; }
 
   OpenCount counted;  // first: released last
   UniqueFd fd;
   SocketAddresses addresses;
-  std::string input;  // bytes read; [input_offset, size) not yet consumed
-  std::size_t input_offset = 0;
+  // Bytes read: [input_begin, input_end) not yet consumed. Grown, never zero-filled per read.
+  std::vector<char> input;
+  std::size_t input_begin = 0;
+  std::size_t input_end = 0;
   std::string output;  // responses; [output_offset, size) not yet sent
   std::size_t output_offset = 0;
   std::string scratch;  // a request rewritten for the library (library_request())
@@ -226,27 +226,30 @@ class EventLoopEngine::Loop {
   // Reads what the socket has, up to the framing's buffer limit.
   Read read_input(Connection& connection) {
     const std::size_t limit = engine_.settings_.framing.max_buffered_bytes();
-    if (connection.input_offset > 0) {  // compact: keep only unread bytes
-      connection.input.erase(0, connection.input_offset);
-      connection.input_offset = 0;
+    if (connection.input_begin > 0) {  // compact: keep only unread bytes
+      std::memmove(connection.input.data(), connection.input.data() + connection.input_begin,
+                   connection.input_end - connection.input_begin);
+      connection.input_end -= connection.input_begin;
+      connection.input_begin = 0;
     }
+    bool got = false;
     for (;;) {
-      const std::size_t unread = connection.input.size();
+      const std::size_t unread = connection.input_end;
       if (unread >= limit) return Read::data;  // framing rejects before this; never spin
-      const std::size_t room = std::min(kReadChunk, limit - unread);
-      connection.input.resize(unread + room);
+      const std::size_t wanted = std::min(unread + kReadChunk, limit);
+      if (connection.input.size() < wanted) connection.input.resize(wanted);
+      const std::size_t room = connection.input.size() - unread;
       const ssize_t n =
           ::recv(connection.fd.get(), connection.input.data() + unread, room, MSG_DONTWAIT);
-      connection.input.resize(unread + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
       if (n > 0) {
+        got = true;
+        connection.input_end += static_cast<std::size_t>(n);
         if (static_cast<std::size_t>(n) < room) return Read::data;
         continue;  // there may be more
       }
       if (n == 0) return Read::eof;
       if (errno == EINTR) continue;
-      if (errno == EAGAIN || errno == EWOULDBLOCK) {
-        return connection.input.size() > unread ? Read::data : Read::again;
-      }
+      if (errno == EAGAIN || errno == EWOULDBLOCK) return got ? Read::data : Read::again;
       return Read::error;
     }
   }
@@ -299,7 +302,7 @@ class EventLoopEngine::Loop {
     } else {
       if (engine_.stopping_()) return close(fd);
       connection.deadline = now + engine_.settings_.keep_alive_timeout;
-      if (connection.input.capacity() > kIdleBufferBytes) std::string().swap(connection.input);
+      if (connection.input.size() > kIdleBufferBytes) std::vector<char>().swap(connection.input);
       if (connection.output.capacity() > kIdleBufferBytes) std::string().swap(connection.output);
     }
     if (!watch(connection, EPOLLIN)) close(fd);
@@ -364,8 +367,7 @@ class EventLoopEngine::Loop {
     connection.output += engine_.render_error_(error);
     connection.last_response = true;
     connection.in_request = false;
-    connection.input.clear();
-    connection.input_offset = 0;
+    connection.drop_input();
   }
 
   enum class Flush { done, again, error };

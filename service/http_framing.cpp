@@ -1,6 +1,7 @@
 #include "service/http_framing.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 namespace cutcalc::service {
@@ -12,21 +13,30 @@ constexpr std::size_t npos = std::string_view::npos;
 // Content-Length values are parsed saturating here (far above any body limit).
 constexpr std::uint64_t kLengthCap = std::uint64_t{1} << 62;
 
-bool is_tchar(char c) {
-  if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')) return true;
-  return std::string_view("!#$%&'*+-.^_`|~").find(c) != npos;
-}
+// Character classes of RFC 9110 5.6.2 (tchar) and 5.5 (field-value: VCHAR, obs-text, SP, HTAB),
+// as tables: the framing runs on every request.
+struct CharClasses {
+  std::array<bool, 256> tchar{};
+  std::array<bool, 256> field_value{};
+  constexpr CharClasses() {
+    for (int c = 0; c < 256; ++c) {
+      const bool alnum = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+      tchar[c] = alnum || std::string_view("!#$%&'*+-.^_`|~").find(static_cast<char>(c)) != npos;
+      field_value[c] = c == ' ' || c == '\t' || (c >= 0x21 && c != 0x7f);
+    }
+  }
+};
+constexpr CharClasses kClasses;
+
+bool is_tchar(char c) { return kClasses.tchar[static_cast<unsigned char>(c)]; }
 
 bool is_token(std::string_view text) {
   return !text.empty() && std::all_of(text.begin(), text.end(), is_tchar);
 }
 
-// field-value (RFC 9110 5.5): VCHAR, obs-text, SP and HTAB; no other control characters.
 bool is_field_value(std::string_view text) {
-  return std::all_of(text.begin(), text.end(), [](char c) {
-    const auto u = static_cast<unsigned char>(c);
-    return c == ' ' || c == '\t' || (u >= 0x21 && u != 0x7f);
-  });
+  return std::all_of(text.begin(), text.end(),
+                     [](char c) { return kClasses.field_value[static_cast<unsigned char>(c)]; });
 }
 
 // The methods cpp-httplib 0.11 parses (Server::parse_request_line); it answers others with a bare
