@@ -90,13 +90,23 @@ const SECTIONS = [
     file: 'main-time.json',
     tolerance: c => timeOrLength(c.tolerance),
     // Prefer a single-pass case whose L_vr and X_n differ, so swapped dimension labels fail.
+    // A straight path (L1 = 0), so that the page also writes the pass program.
     prefer: c => {
+      if (Number(c.request.extra_path_mm ?? 0) > 0) return 2;
       const passes = c.expect.body.lateral_passes ?? [];
       const p = passes[0];
       return passes.length === 1 && p && Math.abs(p.entry_length_mm - p.start.x_mm) > 0.5 ? 0 : 1;
     },
-    endpoints: { 'main-time': '/v1/main-time', 'entry-length': '/v1/entry-length' },
-    shown: { 'main-time': ['/main_time_min'], 'entry-length': ['/entry_length_mm'] },
+    endpoints: {
+      'main-time': '/v1/main-time',
+      'entry-length': '/v1/entry-length',
+      program: '/v1/main-time/program',
+    },
+    shown: {
+      'main-time': ['/main_time_min'],
+      'entry-length': ['/entry_length_mm'],
+      program: ['/working_time_min', '/cycle_time_min'],
+    },
     diagrams: {
       'entry-scheme': ['workpiece', 'contour', 'band', 'cutter-start', 'cutter-first-contact',
         'cutter-saturation', 'dimension-lvr', 'dimension-xn'],
@@ -895,6 +905,15 @@ describe('calculator page at 1280 px', () => {
       }
       const drawn = await checkDiagrams(page, section, diagrams);
       if (section.id === 'entry') {
+        // The pass program under the main-time results (POST /v1/main-time/program), as the
+        // service wrote it, with its download button.
+        const program = await page.evaluate(() => ({
+          text: document.querySelector('#entry-program')?.textContent ?? '',
+          download: document.querySelector('#entry-download')?.disabled === false,
+        }));
+        assert.equal(program.text, bySource.program.json.program, 'entry: the pass program shown is not the service\'s');
+        assert.ok(program.text.startsWith('%\n(CUTCALC)\n(CUTCALC PASS PROGRAM)'), `entry: not a pass program: ${program.text.slice(0, 80)}`);
+        assert.ok(program.download, 'entry: the program download button is not enabled');
         const entryLength = bySource['entry-length'].json;
         const pass = bySource['main-time'].json.lateral_passes;
         const parts = drawn['entry-scheme'].parts;

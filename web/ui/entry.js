@@ -2,13 +2,14 @@
 // POST /v1/entry-length (one pass, with its scheme for the drawings) and POST /v1/main-time
 // (every lateral and depth pass).
 
-import { postJson, postWithOptIn } from './api.js';
+import { fileNameOf, postJson, postWithOptIn, RawNumber } from './api.js';
 import {
   h,
   noDiagram,
   onCalculate,
   readBody,
   showFailure,
+  showMessage,
   sym,
   value,
   valueList,
@@ -29,25 +30,108 @@ import {
 
 const LENGTH = 'entry-length';
 const TIME = 'main-time';
+const PROGRAM = 'program';
+const PROGRAM_PATH = '/v1/main-time/program';
 
 export function init() {
   const form = document.getElementById('entry-form');
   const result = document.getElementById('entry-result');
+  const download = document.getElementById('entry-download');
+  let programRequest = null; // the body of the last program that was written
   wireContourFields(form);
   onCalculate(form, async () => {
-    const [length, time] = await Promise.all([
+    // The pass program takes the main-time request plus the `program` options.
+    const programBody = { ...readBody(form, TIME), ...readBody(form, PROGRAM) };
+    // A program needs a straight path: with an extra path L1 the page does not ask for one.
+    const extra = programBody.extra_path_mm;
+    const straight = extra === undefined || (extra instanceof RawNumber && Number(extra.text) === 0);
+    const [length, time, program] = await Promise.all([
       postWithOptIn('/v1/entry-length', readBody(form, LENGTH), 'include_scheme', true),
       postJson('/v1/main-time', readBody(form, TIME)),
+      straight ? postJson(PROGRAM_PATH, programBody) : Promise.resolve(null),
     ]);
     if (!length.ok) showFailure(form, length, 'Entry length');
     if (!time.ok) showFailure(form, time, 'Main time');
+    // The program repeats main-time's own errors: only its own are shown.
+    if (time.ok && program && !program.ok) showFailure(form, program, 'Program');
+    programRequest = program?.ok ? programBody : null;
+    download.disabled = programRequest === null;
     result.replaceChildren();
     if (length.ok) result.append(...lengthResults(length, result));
     if (time.ok) result.append(...timeResults(time.json));
+    if (program?.ok) result.append(...programResults(program.json));
+    if (time.ok && !straight) {
+      result.append(
+        h('p', { class: 'source-note' }, 'No program: a program needs a straight path (L1 = 0).'),
+      );
+    }
     if (!length.ok && !time.ok) {
       result.append(h('p', { class: 'placeholder' }, 'No results: see the messages in the form.'));
     }
   });
+
+  download.addEventListener('click', async () => {
+    if (!programRequest) return;
+    download.disabled = true;
+    try {
+      const answer = await postJson(PROGRAM_PATH, programRequest, 'text/plain');
+      if (!answer.ok) {
+        showFailure(form, answer, 'Download');
+        return;
+      }
+      const name = fileNameOf(answer.headers.get('Content-Disposition'), 'CUTCALC.ngc');
+      const url = URL.createObjectURL(new Blob([answer.text], { type: 'text/plain' }));
+      const link = h('a', { href: url, download: name, hidden: true });
+      document.body.append(link);
+      link.click();
+      link.remove();
+      setTimeout(() => URL.revokeObjectURL(url), 10000);
+    } catch (error) {
+      showMessage(form, `Download failed: ${error?.message ?? error}`);
+    } finally {
+      download.disabled = programRequest === null;
+    }
+  });
+}
+
+// ------------------------------------------------------------------ the program (main-time/program)
+
+function programResults(body) {
+  const warnings = Array.isArray(body.warnings) ? body.warnings : [];
+  return [
+    h('h3', {}, 'Program'),
+    h(
+      'p',
+      { class: 'source-note' },
+      `From ${PROGRAM_PATH}: ${body.dialect}, ${body.units}, file ${body.file_name}. `,
+      'The feed switches from the entry feed to the steady feed at the end of each entry section, ',
+      'so the feed time is the main time.',
+    ),
+    valueList(
+      body,
+      [
+        [['Passes (lateral \u00d7 depth)'], '/passes', ''],
+        [['Feed time (= main time)'], '/working_time_min', 'min'],
+        [['Plunges'], '/plunge_time_min', 'min'],
+        [['Rapids'], '/rapid_time_min', 'min'],
+        [['Cycle time'], '/cycle_time_min', 'min'],
+      ],
+      PROGRAM,
+    ),
+    h(
+      'p',
+      { class: 'source-note' },
+      `Not in the times: ${(body.not_modelled ?? []).join(', ').replaceAll('_', ' ')}.`,
+    ),
+    warnings.length
+      ? h(
+          'ul',
+          { class: 'warnings' },
+          warnings.map((w, i) => h('li', {}, value(body, `/warnings/${i}/code`), ': ', w.detail)),
+        )
+      : [],
+    h('pre', { id: 'entry-program', tabindex: '0', 'aria-label': 'G-code program' }, body.program),
+  ];
 }
 
 // ------------------------------------------------------------------ one pass (entry-length)

@@ -43,7 +43,11 @@ export function controls(form) {
 }
 
 function controlValue(control) {
-  if (control.tagName === 'SELECT') return control.value;
+  if (control.tagName === 'SELECT') {
+    // A yes/no choice is a JSON boolean.
+    if (control.dataset.type === 'boolean') return control.value === 'true';
+    return control.value;
+  }
   const text = control.value.trim();
   if (control.dataset.type === 'number-list') {
     return text
