@@ -453,7 +453,10 @@ std::optional<std::string> negative_length(const nlohmann::json& body) {
   return first_negative(body, "", false);
 }
 
-std::optional<std::string> bad_program_text(std::string_view program) {
+namespace {
+
+// A program is printable US-ASCII lines, each ended by LF.
+std::optional<std::string> bad_ascii_lines(std::string_view program) {
   if (program.empty() || program.back() != '\n') {
     return "the program is empty or does not end with a newline";
   }
@@ -462,6 +465,15 @@ std::optional<std::string> bad_program_text(std::string_view program) {
     if (c != '\n' && (byte < 0x20 || byte > 0x7e)) {
       return "the program has a byte outside printable US-ASCII: " + std::to_string(byte);
     }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> bad_program_text(std::string_view program) {
+  if (auto why = bad_ascii_lines(program)) {
+    return why;
   }
   std::size_t line_number = 0;
   std::size_t begin = 0;
@@ -531,14 +543,8 @@ std::optional<std::string> bad_program_text(std::string_view program) {
 // -0; `%` first and last (linuxcnc, fanuc) or nowhere (sinumerik); fanuc's `O{4 digits} (NAME)`
 // its only O word.
 std::optional<std::string> bad_dialect_program_text(std::string_view program) {
-  if (program.empty() || program.back() != '\n') {
-    return "the program is empty or does not end with a newline";
-  }
-  for (const char c : program) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c != '\n' && (byte < 0x20 || byte > 0x7e)) {
-      return "the program has a byte outside printable US-ASCII: " + std::to_string(byte);
-    }
+  if (auto why = bad_ascii_lines(program)) {
+    return why;
   }
   const bool sinumerik = starts_with(program, "; ");
   const bool fanuc = starts_with(program, "%\nO");

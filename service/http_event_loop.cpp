@@ -414,18 +414,32 @@ class EventLoopEngine::Loop {
   void sweep(Clock::time_point now) {
     const bool stopping = engine_.stopping_();
     std::vector<int> expired;
+    std::vector<int> idle_at_stop;
     for (const auto& [fd, connection] : table_) {
-      const bool idle = !connection->in_request && !connection->has_output();
-      // Stopping closes idle and lingering connections; a request in flight keeps its connection
-      // until it is answered (the response then says Connection: close) or its deadline passes.
-      if ((stopping && (idle || connection->lingering)) || now >= connection->deadline) {
+      if (now >= connection->deadline) {
         if (connection->in_request) {
           engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
         }
         expired.push_back(fd);
+      } else if (stopping && (connection->lingering ||
+                              (!connection->in_request && !connection->has_output()))) {
+        idle_at_stop.push_back(fd);
       }
     }
     for (const int fd : expired) close(fd);
+    // Stopping closes idle and lingering connections; a request in flight keeps its connection
+    // until it is answered (the response then says Connection: close) or its deadline passes.
+    // A connection whose first bytes are in the socket but not yet read is in flight too.
+    for (const int fd : idle_at_stop) {
+      const auto it = table_.find(fd);
+      if (it == table_.end()) continue;
+      char byte = 0;
+      if (!it->second->lingering && ::recv(fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 1) {
+        on_event(*it->second, EPOLLIN);
+      } else {
+        close(fd);
+      }
+    }
   }
 
   EventLoopEngine& engine_;

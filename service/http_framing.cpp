@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace cutcalc::service {
 namespace {
@@ -132,27 +133,29 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
   std::size_t framing = 0;  // chunk sizes, extensions, CRLFs and trailers
   std::size_t content = 0;
   std::size_t fields = 0;
-  const auto budget_left = [&] {
-    return limits.max_head_bytes - std::min(framing, limits.max_head_bytes);
-  };
-  for (;;) {
-    std::string_view line;
+  constexpr std::string_view kTooMuchFraming = "chunk framing is over the head size limit";
+  // The next framing line at `pos`, counted against the head's allowance: ok, or a verdict.
+  const auto framing_line = [&](std::string_view& line,
+                                std::string_view malformed) -> std::optional<RequestFrame> {
     switch (next_line(input, pos, line)) {
       case Line::bad:
-        return reject(frame, 400, "malformed chunk size line");
+        return reject(frame, 400, malformed);
       case Line::incomplete:
-        if (input.size() - pos > budget_left()) {
-          return reject(frame, 400, "chunk framing is over the head size limit");
+        if (framing + (input.size() - pos) > limits.max_head_bytes) {
+          return reject(frame, 400, kTooMuchFraming);
         }
         return frame;
       case Line::ok:
         break;
     }
     framing += line.size() + 2;
-    if (framing > limits.max_head_bytes) {
-      return reject(frame, 400, "chunk framing is over the head size limit");
-    }
     pos += line.size() + 2;
+    if (framing > limits.max_head_bytes) return reject(frame, 400, kTooMuchFraming);
+    return std::nullopt;
+  };
+  for (;;) {
+    std::string_view line;
+    if (auto verdict = framing_line(line, "malformed chunk size line")) return *verdict;
     // chunk-size [ chunk-ext ]: 1*HEXDIG, then nothing or BWS ";" and the extension (ignored).
     std::size_t digits = 0;
     std::uint64_t size = 0;
@@ -180,22 +183,7 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
   // Trailer section: field lines (validated, then dropped), then an empty line.
   for (;;) {
     std::string_view line;
-    switch (next_line(input, pos, line)) {
-      case Line::bad:
-        return reject(frame, 400, "malformed trailer field");
-      case Line::incomplete:
-        if (input.size() - pos > budget_left()) {
-          return reject(frame, 400, "chunk framing is over the head size limit");
-        }
-        return frame;
-      case Line::ok:
-        break;
-    }
-    framing += line.size() + 2;
-    pos += line.size() + 2;
-    if (framing > limits.max_head_bytes) {
-      return reject(frame, 400, "chunk framing is over the head size limit");
-    }
+    if (auto verdict = framing_line(line, "malformed trailer field")) return *verdict;
     if (line.empty()) break;
     std::string_view name;
     std::string_view value;
@@ -221,22 +209,27 @@ RequestFrame classify_request(std::string_view input, const FramingLimits& limit
   }
   frame.skipped_bytes = pos;
   const std::size_t start = pos;
-  const auto head_too_large = [&](std::size_t end) { return end - start > limits.max_head_bytes; };
+  constexpr std::string_view kHeadTooLarge = "the request head is over the size limit";
+  // The next line of the head at `pos`: ok, or the verdict (incomplete, or a rejection).
+  const auto head_line = [&](std::string_view& line,
+                             std::string_view malformed) -> std::optional<RequestFrame> {
+    switch (next_line(input, pos, line)) {
+      case Line::bad:
+        return reject(frame, 400, malformed);
+      case Line::incomplete:
+        if (input.size() - start > limits.max_head_bytes) return reject(frame, 400, kHeadTooLarge);
+        return frame;
+      case Line::ok:
+        break;
+    }
+    pos += line.size() + 2;
+    if (pos - start > limits.max_head_bytes) return reject(frame, 400, kHeadTooLarge);
+    return std::nullopt;
+  };
 
   // request-line = method SP request-target SP HTTP-version (RFC 9112 3)
   std::string_view request_line;
-  switch (next_line(input, pos, request_line)) {
-    case Line::bad:
-      return reject(frame, 400, "malformed request line");
-    case Line::incomplete:
-      if (head_too_large(input.size())) {
-        return reject(frame, 400, "the request head is over the size limit");
-      }
-      return frame;
-    case Line::ok:
-      break;
-  }
-  pos += request_line.size() + 2;
+  if (auto verdict = head_line(request_line, "malformed request line")) return *verdict;
   const std::size_t space1 = request_line.find(' ');
   const std::size_t space2 = space1 == npos ? npos : request_line.find(' ', space1 + 1);
   if (space2 == npos || space2 == space1 + 1 || request_line.find(' ', space2 + 1) != npos) {
@@ -273,19 +266,7 @@ RequestFrame classify_request(std::string_view input, const FramingLimits& limit
   bool only_chunked = true;
   for (;;) {
     std::string_view line;
-    switch (next_line(input, pos, line)) {
-      case Line::bad:
-        return reject(frame, 400, "malformed header field line");
-      case Line::incomplete:
-        if (head_too_large(input.size())) {
-          return reject(frame, 400, "the request head is over the size limit");
-        }
-        return frame;
-      case Line::ok:
-        break;
-    }
-    pos += line.size() + 2;
-    if (head_too_large(pos)) return reject(frame, 400, "the request head is over the size limit");
+    if (auto verdict = head_line(line, "malformed header field line")) return *verdict;
     if (line.empty()) break;
     std::string_view name;
     std::string_view value;

@@ -4,32 +4,27 @@
 #include "api/entry/entry_json.h"
 #include "api/entry/main_time_request.h"
 #include "api/program/program_reader.h"
-#include "domain/entry/main_time.h"
 #include "domain/program/pass_program.h"
 
 namespace cutcalc::api::entry {
 
+nlohmann::json main_time_json(const domain::entry::MainTimeResult& result,
+                              const domain::program::MachineLimits& limits) {
+  nlohmann::json json = to_json(result);
+  json["warnings"] = program::to_json(domain::program::limit_warnings(
+      result.spindle_speed_rpm, domain::program::setup_feeds_mm_per_min(result), limits));
+  return json;
+}
+
 HandlerOutcome handle_main_time(const nlohmann::json& body) {
-  std::vector<FieldError> errors;
-  ObjectReader in = root_reader(body, errors);
-  const auto params = read_main_time_params(in);
-  const auto limits = program::read_machine_limits(in);
-  in.reject_unknown_fields();
-  if (errors.empty()) {
-    errors = main_time_alternative_errors(in);
-  }
-  if (!errors.empty()) {
-    return invalid_input(std::move(errors));
-  }
+  auto request = read_main_time_request(body, false);
+  if (auto* problem = std::get_if<Problem>(&request)) return std::move(*problem);
+  const auto& [params, limits, unused] = std::get<MainTimeRequest>(request);
   const auto result = domain::entry::compute_main_time(params);
   if (!result.ok()) {
     return to_problem(result.error());
   }
-  nlohmann::json json = to_json(result.value());
-  json["warnings"] = program::to_json(domain::program::limit_warnings(
-      result.value().spindle_speed_rpm, domain::program::setup_feeds_mm_per_min(result.value()),
-      limits));
-  return json;
+  return main_time_json(result.value(), limits);
 }
 
 }  // namespace cutcalc::api::entry

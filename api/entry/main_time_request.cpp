@@ -1,6 +1,8 @@
 #include "api/entry/main_time_request.h"
 
 #include "api/entry/contour_reader.h"
+#include "api/field_reader.h"
+#include "api/program/program_reader.h"
 
 namespace cutcalc::api::entry {
 namespace {
@@ -22,9 +24,7 @@ domain::entry::Allowance read_allowance(ObjectReader& in) {
   return out;
 }
 
-}  // namespace
-
-MainTimeParams read_main_time_params(ObjectReader& in) {
+MainTimeParams read_params(ObjectReader& in) {
   MainTimeParams params;
   params.cutter_diameter_mm =
       in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
@@ -61,7 +61,7 @@ MainTimeParams read_main_time_params(ObjectReader& in) {
   return params;
 }
 
-std::vector<FieldError> main_time_alternative_errors(const ObjectReader& in) {
+std::vector<FieldError> alternative_errors(const ObjectReader& in) {
   std::vector<FieldError> errors;
   if (in.has("spindle_speed_rpm") == in.has("cutting_speed_m_per_min")) {
     errors.push_back({"", "give exactly one of spindle_speed_rpm and cutting_speed_m_per_min"});
@@ -70,6 +70,24 @@ std::vector<FieldError> main_time_alternative_errors(const ObjectReader& in) {
     errors.push_back({"", "give at most one of entry_feed_factor and entry_feed_per_tooth_mm"});
   }
   return errors;
+}
+
+}  // namespace
+
+std::variant<MainTimeRequest, Problem> read_main_time_request(const nlohmann::json& body,
+                                                              bool with_program) {
+  std::vector<FieldError> errors;
+  ObjectReader in = root_reader(body, errors);
+  MainTimeRequest request;
+  request.params = read_params(in);
+  if (with_program) {
+    request.program = program::read_program_options(in, program::ProgramKind::pass_program);
+  }
+  request.limits = program::read_machine_limits(in);
+  in.reject_unknown_fields();
+  if (errors.empty()) errors = alternative_errors(in);
+  if (!errors.empty()) return invalid_input(std::move(errors));
+  return request;
 }
 
 }  // namespace cutcalc::api::entry

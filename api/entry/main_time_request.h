@@ -1,18 +1,25 @@
 #pragma once
-// The request fields of POST /v1/main-time, which POST /v1/main-time/program takes too.
+// The request of POST /v1/main-time, which POST /v1/main-time/program takes too (with `program`).
 
-#include <vector>
+#include <variant>
 
-#include "api/field_reader.h"
+#include <nlohmann/json.hpp>
+
+#include "api/problem.h"
 #include "domain/entry/main_time.h"
+#include "domain/program/program_options.h"
 
 namespace cutcalc::api::entry {
 
-// The main-time fields of the request object (the caller rejects unknown fields once it has read
-// its own); meaningful only when the reader recorded no error.
-domain::entry::MainTimeParams read_main_time_params(ObjectReader& in);
+struct MainTimeRequest {
+  domain::entry::MainTimeParams params;
+  domain::program::MachineLimits limits;    // `machine`
+  domain::program::ProgramOptions program;  // `program` (defaults unless with_program)
+};
 
-// Which alternatives were sent: checked only once every field is valid on its own.
-std::vector<FieldError> main_time_alternative_errors(const ObjectReader& in);
+// Every field error (with `program` only when `with_program`), then the alternatives; a problem
+// when anything is wrong.
+std::variant<MainTimeRequest, Problem> read_main_time_request(const nlohmann::json& body,
+                                                              bool with_program);
 
 }  // namespace cutcalc::api::entry

@@ -2,14 +2,14 @@
 // POST /v1/entry-length (one pass, with its scheme for the drawings) and POST /v1/main-time
 // (every lateral and depth pass).
 
-import { fileNameOf, postJson, postWithOptIn, RawNumber } from './api.js';
+import { postJson, postWithOptIn, RawNumber } from './api.js';
 import {
   h,
   noDiagram,
   onCalculate,
   readBody,
+  downloadProgram,
   showFailure,
-  showMessage,
   sym,
   value,
   valueList,
@@ -74,20 +74,7 @@ export function init() {
     if (!programRequest) return;
     download.disabled = true;
     try {
-      const answer = await postJson(PROGRAM_PATH, programRequest, 'text/plain');
-      if (!answer.ok) {
-        showFailure(form, answer, 'Download');
-        return;
-      }
-      const name = fileNameOf(answer.headers.get('Content-Disposition'), 'CUTCALC.ngc');
-      const url = URL.createObjectURL(new Blob([answer.text], { type: 'text/plain' }));
-      const link = h('a', { href: url, download: name, hidden: true });
-      document.body.append(link);
-      link.click();
-      link.remove();
-      setTimeout(() => URL.revokeObjectURL(url), 10000);
-    } catch (error) {
-      showMessage(form, `Download failed: ${error?.message ?? error}`);
+      await downloadProgram(form, PROGRAM_PATH, programRequest, 'CUTCALC.ngc');
     } finally {
       download.disabled = programRequest === null;
     }

@@ -1,7 +1,7 @@
 // Forms: request bodies from the inputs (each input's name is its JSON Pointer), the service's
 // problem messages next to the fields, and the result elements (data-result / data-value).
 
-import { numberLiteral, RawNumber } from './api.js';
+import { fileNameOf, numberLiteral, postJson, RawNumber } from './api.js';
 
 // Element builder: h('p', {class: 'x', 'data-a': 1}, 'text', child, ...). Attributes only: no
 // inline style, no HTML strings (the page runs under a strict Content-Security-Policy).
@@ -261,4 +261,25 @@ export function sym(base, sub = '') {
 
 export function noDiagram(what) {
   return h('p', { class: 'no-diagram' }, `No diagram data: ${what}`);
+}
+
+// Asks `path` for the plain-text program of `body` (Accept: text/plain) and saves it under the
+// file name the service gives (Content-Disposition), or `fallback`. Failures are shown on `form`.
+export async function downloadProgram(form, path, body, fallback) {
+  try {
+    const answer = await postJson(path, body, 'text/plain');
+    if (!answer.ok) {
+      showFailure(form, answer, 'Download');
+      return;
+    }
+    const name = fileNameOf(answer.headers.get('Content-Disposition'), fallback);
+    const url = URL.createObjectURL(new Blob([answer.text], { type: 'text/plain' }));
+    const link = h('a', { href: url, download: name, hidden: true });
+    document.body.append(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 10000);
+  } catch (error) {
+    showMessage(form, `Download failed: ${error?.message ?? error}`);
+  }
 }

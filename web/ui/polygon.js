@@ -1,15 +1,15 @@
 // Polygon-hole G-code (paper 004): the program, its figures, the predicted hole and its corner,
 // and the program as a .ngc download (the same request with Accept: text/plain).
 
-import { fileNameOf, postJson, postWithOptIn } from './api.js';
+import { postWithOptIn } from './api.js';
 import {
   fmt,
   h,
   noDiagram,
   onCalculate,
   readBody,
+  downloadProgram,
   showFailure,
-  showMessage,
   sym,
   value,
   valueList,
@@ -53,20 +53,7 @@ export function init() {
     if (!calculated) return;
     download.disabled = true;
     try {
-      const answer = await postJson(PATH, calculated, 'text/plain');
-      if (!answer.ok) {
-        showFailure(form, answer, 'Download');
-        return;
-      }
-      const name = fileNameOf(answer.headers.get('Content-Disposition'), 'polygon-hole.ngc');
-      const url = URL.createObjectURL(new Blob([answer.text], { type: 'text/plain' }));
-      const link = h('a', { href: url, download: name, hidden: true });
-      document.body.append(link);
-      link.click();
-      link.remove();
-      setTimeout(() => URL.revokeObjectURL(url), 10000);
-    } catch (error) {
-      showMessage(form, `Download failed: ${error?.message ?? error}`);
+      await downloadProgram(form, PATH, calculated, 'polygon-hole.ngc');
     } finally {
       download.disabled = calculated === null;
     }
