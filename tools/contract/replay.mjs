@@ -68,6 +68,13 @@ const CONCURRENCY = Math.max(1, Number(process.env.REPLAY_CONCURRENCY) || 4);
 const PRISM_ERROR = 'https://stoplight.io/prism/errors#';
 
 // ------------------------------------------------------------------ cases
+// The calculation endpoints and which of them also answer a plain-text program, from the reference
+// files' endpoints and openapi.yaml's text/plain 200 answers: a new endpoint needs no entry here.
+const TEXT_FORM_PATHS = new Set(
+  [...readFileSync(OPENAPI_FILE, 'utf8').matchAll(/^  (\/v1\/[^:]+):\n(?:(?!^  \/).*\n)*?            text\/plain/gm)]
+    .map(m => m[1]),
+);
+
 function referenceCases() {
   let files;
   try {
@@ -86,7 +93,7 @@ function referenceCases() {
       cases.push({ id, kind: 'reference', method: 'POST', path: doc.endpoint, body, expect: [c.expect.status] });
       if (c.expect.status === 200) {
         firstValid[doc.endpoint] ??= c.request;
-        if (doc.endpoint === '/v1/polygon-hole/gcode') {
+        if (TEXT_FORM_PATHS.has(doc.endpoint)) {
           cases.push({
             id: `${id} (Accept: text/plain)`, kind: 'reference', method: 'POST', path: doc.endpoint, body,
             accept: 'text/plain', expect: [200],
@@ -98,10 +105,6 @@ function referenceCases() {
   return { files, cases, firstValid };
 }
 
-const CALC_PATHS = [
-  '/v1/entry-length', '/v1/main-time', '/v1/resultant-speeds',
-  '/v1/roughness/groove-wall', '/v1/roughness/bore-milling', '/v1/polygon-hole/gcode',
-];
 
 // Top-level fields of a valid request that the contract requires to be positive sizes: numbers
 // ending in _mm whose request schema has minimum > 0 or exclusiveMinimum >= 0.
@@ -125,7 +128,7 @@ function withRawValue(request, key, raw) {
 
 function badInputCases(firstValid) {
   const cases = [];
-  for (const p of CALC_PATHS) {
+  for (const p of Object.keys(firstValid)) {
     const base = firstValid[p];
     if (!base) {
       console.error(`replay: no reference case with status 200 for ${p} to derive bad inputs from`);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -81,6 +82,12 @@ TEST(MainTimeProgram, PlainTextAnswerIsTheProgramWithTheDialectsFileName) {
   EXPECT_EQ(reply->get_header_value("Content-Type"), "text/plain; charset=us-ascii");
   EXPECT_EQ(reply->get_header_value("Content-Disposition"), "attachment; filename=\"FACE_01.MPF\"");
   EXPECT_EQ(reply->body, as_json.json.at("program").get<std::string>());
+  std::map<std::string, std::string> headers;
+  for (const auto& [name, value] : reply->headers) headers[name] = value;
+  for (const auto& violation :
+       test_support::project_contract().check_response_headers("post", kPath, 200, headers)) {
+    ADD_FAILURE() << "headers break openapi.yaml: " << violation;
+  }
 }
 
 TEST(MainTimeProgram, WorkingTimeIsTheMainTimeOfMainTime) {
