@@ -638,9 +638,11 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
     if (!has_attachment) {
       return "the text/plain program has no Content-Disposition: attachment";
     }
-    const bool pass_program = path == "/v1/main-time/program";
-    if (auto why = pass_program ? bad_dialect_program_text(response.body)
-                                : bad_program_text(response.body)) {
+    // Today's polygon program, or a program in a dialect (a pass program, or a polygon program
+    // with a `program` object).
+    const bool todays_polygon = starts_with(response.body, "%\n(CUTCALC POLYGON HOLE N");
+    if (auto why = todays_polygon ? bad_program_text(response.body)
+                                  : bad_dialect_program_text(response.body)) {
       return why;
     }
 #ifdef CUTCALC_FUZZ_OPENAPI_PATH

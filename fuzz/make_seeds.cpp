@@ -202,6 +202,21 @@ int main(int argc, char** argv) {
           std::ofstream(corpus / ("plot-" + name)) << plot->dump();
           ++seeds;
         }
+        // Polygon programs in another dialect and unit (programs.md section 2), so that the
+        // fuzzers start inside the dialect writers too.
+        if (reference.at("endpoint") == "/v1/polygon-hole/gcode" && request.is_object()) {
+          nlohmann::json dialect = request;
+          dialect.erase("safe_z_mm");
+          dialect["program"] = {{"dialect", seeds % 2 == 0 ? "fanuc" : "sinumerik"},
+                                {"units", "inch"},
+                                {"name", "HOLE_1"},
+                                {"tool_number", 2},
+                                {"tool_length_offset", true},
+                                {"coolant", "mist"}};
+          dialect["machine"] = {{"max_spindle_rpm", 100}, {"max_feed_mm_per_min", 1000}};
+          std::ofstream(corpus / ("program-" + name)) << dialect.dump();
+          ++seeds;
+        }
       }
       ++files;
     }

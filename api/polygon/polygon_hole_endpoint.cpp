@@ -5,6 +5,7 @@
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "api/program/program_reader.h"
 #include "domain/polygon/hole_geometry.h"
 #include "domain/polygon/polygon_hole.h"
 
@@ -47,10 +48,23 @@ model::PolygonHoleParams read_params(ObjectReader& in) {
   return params;
 }
 
-PolygonHoleRequest read_request(ObjectReader& in) {
+PolygonHoleRequest read_request(const nlohmann::json& body, ObjectReader& in,
+                                std::vector<FieldError>& errors) {
   PolygonHoleRequest request;
   request.params = read_params(in);
   request.include_geometry = in.boolean_or("include_geometry", false);
+  if (in.has("program")) {
+    request.params.program = program::read_program_options(in, program::ProgramKind::polygon);
+    const auto& given = body.at("program");
+    if (given.is_object() && given.contains("safe_z_mm")) {
+      if (in.has("safe_z_mm")) {
+        errors.push_back({"/program/safe_z_mm",
+                          "give safe_z_mm either at the top level or in program, not both"});
+      }
+      request.params.safe_z_mm = request.params.program->safe_z_mm;
+    }
+  }
+  request.params.machine = program::read_machine_limits(in);
   in.reject_unknown_fields();
   return request;
 }
@@ -70,7 +84,8 @@ nlohmann::json to_json(const model::PolygonHoleResult& result) {
           {"uncut_corner_area_mm2", result.uncut_corner_area_mm2},
           {"corner_gap_mm", result.corner_gap_mm},
           {"max_feed_by_block_rate_mm_per_min", result.max_feed_by_block_rate_mm_per_min},
-          {"warnings", std::move(warnings)}};
+          {"warnings", std::move(warnings)},
+          {"file_name", result.file_name}};
 }
 
 nlohmann::json to_json(const model::PlanePoint& point) {
@@ -106,7 +121,7 @@ nlohmann::json to_json(const model::HoleGeometry& geometry) {
 HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
   std::vector<FieldError> errors;
   ObjectReader in = root_reader(body, errors);
-  const auto request = read_request(in);
+  const auto request = read_request(body, in, errors);
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
   }
@@ -115,6 +130,13 @@ HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
     return to_problem(result.error());
   }
   nlohmann::json json = to_json(result.value());
+  const domain::program::ProgramOptions options =
+      request.params.program.value_or(domain::program::ProgramOptions{});
+  json["dialect"] = domain::program::dialect_name(options.dialect);
+  json["units"] = domain::program::units_name(options.units);
+  if (result.value().printed_path_deviation_mm) {
+    json["printed_path_deviation_mm"] = *result.value().printed_path_deviation_mm;
+  }
   if (request.include_geometry) {
     // Only the JSON answer: the plain-text program is the same with or without it.
     const auto geometry =

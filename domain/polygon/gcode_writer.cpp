@@ -3,6 +3,8 @@
 
 #include "domain/polygon/gcode_writer.h"
 
+#include "domain/program/dialect_writer.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -58,19 +60,24 @@ std::string fmt4(double value) {
   return text;
 }
 
+std::string NumberFormat::operator()(double mm) const {
+  return program::format_fixed(mm * units_per_mm, decimals);
+}
+
 // P23
-PrintedLoop print_loop(const std::vector<LoopBlock>& blocks, double scale) {
+PrintedLoop print_loop(const std::vector<LoopBlock>& blocks, double scale,
+                       const NumberFormat& fmt) {
   PrintedLoop loop;
   loop.blocks.reserve(blocks.size());
   Eigen::Vector2d S = scale * blocks.front().arc.start;  // unrounded start, (0, e) at a loop start
-  loop.start_X = fmt4(S.x());
-  loop.start_Y = fmt4(S.y());
+  loop.start_X = fmt(S.x());
+  loop.start_Y = fmt(S.y());
   Eigen::Vector2d S_printed(parse(loop.start_X), parse(loop.start_Y));
   for (const LoopBlock& block : blocks) {
     const Eigen::Vector2d E = scale * block.arc.end;
     const Eigen::Vector2d C = scale * block.arc.centre;
-    PrintedBlock printed{fmt4(E.x()),         fmt4(E.y()), fmt4(C.x() - S.x()),
-                         fmt4(C.y() - S.y()), block.t_end, scale * block.s_end};
+    PrintedBlock printed{fmt(E.x()),         fmt(E.y()),  fmt(C.x() - S.x()),
+                         fmt(C.y() - S.y()), block.t_end, scale * block.s_end};
     const Eigen::Vector2d E_printed(parse(printed.X), parse(printed.Y));
     const Eigen::Vector2d C_printed =
         S_printed + Eigen::Vector2d(parse(printed.I), parse(printed.J));
@@ -91,6 +98,7 @@ PrintedLoop print_loop(const std::vector<LoopBlock>& blocks, double scale) {
     S = E;
     S_printed = E_printed;
   }
+  loop.printed_length /= fmt.units_per_mm;  // the printed numbers are in program units
   loop.fitted_length = scale * blocks.back().s_end;
   return loop;
 }
@@ -108,58 +116,59 @@ double program_arc_blocks(double layers, int loops_per_layer, std::size_t blocks
   return loops * static_cast<double>(blocks_per_loop);
 }
 
-// Section 5, P22, P23
-std::string write_program(const ProgramLayout& layout, const PrintedLoop& loop) {
+namespace {
+
+// How the body is written: today's words and numbers, or a dialect's (programs.md section 2).
+struct BodyStyle {
+  NumberFormat fmt;
+  const program::DialectWords* words = nullptr;
+  std::string spindle_speed;                // the S word's number
+  bool ramp_feed_along_projection = false;  // fanuc: F along the arc projected on XY
+  program::Coolant coolant = program::Coolant::off;
+};
+
+// Section 5's body, P22, P23: from S M3 (c_axis: G0 X Y C0) through M5 (c_axis: the last G0 Z).
+void write_body(Lines& out, const ProgramLayout& layout, const PrintedLoop& loop,
+                const BodyStyle& style) {
+  const program::DialectWords& words = *style.words;
+  const NumberFormat& fmt = style.fmt;
   const bool c_axis = layout.synchronization == Synchronization::c_axis;
   const double L_p = loop.printed_length;
   const double L_u = loop.fitted_length;
   const std::string flat_F =
-      fmt4(c_axis ? layout.spindle_speed_rpm * layout.feed_per_rev_mm : layout.feed_per_rev_mm);
+      fmt(c_axis ? layout.spindle_speed_rpm * layout.feed_per_rev_mm : layout.feed_per_rev_mm);
   const double ramp_ratio = layout.dz_mm / L_p;
   const std::string ramp_F =
-      c_axis ? flat_F : fmt4(layout.feed_per_rev_mm * std::sqrt(1.0 + ramp_ratio * ramp_ratio));
-  const std::string safe_z = fmt4(layout.safe_z_mm);
+      c_axis || style.ramp_feed_along_projection
+          ? flat_F
+          : fmt(layout.feed_per_rev_mm * std::sqrt(1.0 + ramp_ratio * ramp_ratio));
+  const std::string safe_z = fmt(layout.safe_z_mm);
+  const std::string zero = fmt(0.0);
   const int loops = layout.layers * layout.loops_per_layer + (layout.loops_per_layer == 1 ? 1 : 0);
   const double turn_per_loop = 2.0 * std::numbers::pi / (layout.N - 1.0);
+  const auto coolant_on = [&] {
+    if (style.coolant != program::Coolant::off) {
+      out.line(style.coolant == program::Coolant::mist ? words.mist : words.flood);
+    }
+  };
+  const auto coolant_off = [&] {
+    if (style.coolant != program::Coolant::off) out.line(words.coolant_off);
+  };
+  const std::string_view rapid = words.rapid + 1;  // the number after the letter
+  const std::string_view feed = words.feed + 1;
+  const std::string_view arc = words.arc_ccw + 1;
 
-  Lines out;
-  out.reserve(static_cast<std::size_t>(loops) * loop.blocks.size() * (c_axis ? 64 : 48) + 2048);
-  out.line("%");
-  out.line("(CUTCALC POLYGON HOLE N" + std::to_string(layout.N) + " D" + fmt4(layout.d_mm) + " A" +
-           fmt4(layout.a_mm) + ")");
-  out.line("(ROTOR " + std::to_string(layout.N - 1) + " CORNERS ON DIAMETER " +
-           fmt4(2.0 * layout.r_mm) + " ECCENTRICITY " + fmt4(layout.e_mm) + ")");
-  out.line("(LOOP LENGTH " + fmt4(L_p) + " EXACT " + fmt4(layout.exact_loop_length_mm) +
-           " BLOCKS PER LOOP " + std::to_string(loop.blocks.size()) + " TOLERANCE " +
-           fmt4(layout.tolerance_mm) + " DEVIATION " + fmt4(layout.deviation_mm) + ")");
-  out.line("(DEPTH " + fmt4(layout.depth_mm) + " IN " + std::to_string(layout.layers) +
-           " LAYERS OF " + fmt4(layout.dz_mm) + " STEP DOWN " + fmt4(layout.step_down_mm) +
-           " LOOPS PER LAYER " + std::to_string(layout.loops_per_layer) +
-           " FIRST LOOP OF A LAYER A HELICAL RAMP)");
   if (c_axis) {
-    out.line("(SPINDLE AS ROTARY AXIS C IN POSITION MODE: C0 = CORNER 0 POINTING -Y)");
-    out.line("(C = MINUS ROTOR TURN IN DEGREES CUMULATIVE. G94 F " + flat_F + " MM PER MIN)");
-  } else {
-    out.line("(G95 FEED PER SPINDLE REV " + flat_F + " AT " + fmt4(layout.spindle_speed_rpm) +
-             " RPM. RAMP LOOPS " + ramp_F + " ALONG THE HELIX)");
-  }
-  out.line("(FRAME: HOLE CENTRE X0 Y0 TOP FACE Z0 SIDE 0 AT Y-" + fmt4(0.5 * layout.d_mm) +
-           " PATH G3 CCW ROTOR CW. " + std::to_string(layout.N - 1) + " LOOPS PER SPINDLE REV)");
-  out.line("G21 G17 G90 G40 G80 G94");
-  out.word('G', "0").word('Z', safe_z).end_line();
-  if (c_axis) {
-    out.word('G', "0")
-        .word('X', loop.start_X)
-        .word('Y', loop.start_Y)
-        .word('C', "0.0000")
-        .end_line();
+    coolant_on();
+    out.word('G', rapid).word('X', loop.start_X).word('Y', loop.start_Y).word('C', zero).end_line();
     out.word('G', "94").word('F', flat_F).end_line();
   } else {
-    out.word('S', fmt4(layout.spindle_speed_rpm)).word('M', "3").end_line();
-    out.word('G', "0").word('X', loop.start_X).word('Y', loop.start_Y).end_line();
+    out.word('S', style.spindle_speed).word('M', words.spindle_on + 1).end_line();
+    coolant_on();
+    out.word('G', rapid).word('X', loop.start_X).word('Y', loop.start_Y).end_line();
     out.word('G', "95").word('F', ramp_F).end_line();
   }
-  out.line("G1 Z0.0000");
+  out.word('G', feed).word('Z', zero).end_line();
 
   bool previous_ramp = true;
   for (int loop_index = 0; loop_index < loops; ++loop_index) {
@@ -178,27 +187,109 @@ std::string write_program(const ProgramLayout& layout, const PrintedLoop& loop) 
     const double t_loop = loop_index * turn_per_loop;
     for (std::size_t b = 0; b < loop.blocks.size(); ++b) {
       const PrintedBlock& block = loop.blocks[b];
-      out.word('G', "3").word('X', block.X).word('Y', block.Y);
+      out.word('G', arc).word('X', block.X).word('Y', block.Y);
       if (ramp) {
         const bool last = b + 1 == loop.blocks.size();
-        out.word('Z', fmt4(last ? z_bottom : z_top - layout.dz_mm * block.s_end / L_u));
+        out.word('Z', fmt(last ? z_bottom : z_top - layout.dz_mm * block.s_end / L_u));
       }
       out.word('I', block.I).word('J', block.J);
       if (c_axis) {
-        out.word('C', fmt4(-(180.0 / std::numbers::pi) * (t_loop + block.t_end)));
+        // Degrees, in every unit system.
+        out.word('C', program::format_fixed(-(180.0 / std::numbers::pi) * (t_loop + block.t_end),
+                                            fmt.decimals));
       }
       out.end_line();
     }
   }
 
-  out.word('G', "0").word('Z', safe_z).end_line();
+  out.word('G', rapid).word('Z', safe_z).end_line();
   if (!c_axis) {
     out.line("G94");
-    out.line("M5");
+    out.line(words.spindle_off);
   }
+  coolant_off();
+}
+
+std::size_t body_size(const ProgramLayout& layout, const PrintedLoop& loop) {
+  const bool c_axis = layout.synchronization == Synchronization::c_axis;
+  const int loops = layout.layers * layout.loops_per_layer + (layout.loops_per_layer == 1 ? 1 : 0);
+  return static_cast<std::size_t>(loops) * loop.blocks.size() * (c_axis ? 64 : 48) + 2048;
+}
+
+}  // namespace
+
+std::vector<std::string> program_comments(const ProgramLayout& layout, const PrintedLoop& loop,
+                                          bool ramp_feed_along_projection) {
+  const bool c_axis = layout.synchronization == Synchronization::c_axis;
+  const double L_p = loop.printed_length;
+  const std::string flat_F =
+      fmt4(c_axis ? layout.spindle_speed_rpm * layout.feed_per_rev_mm : layout.feed_per_rev_mm);
+  const double ramp_ratio = layout.dz_mm / L_p;
+  const std::string ramp_F =
+      c_axis ? flat_F : fmt4(layout.feed_per_rev_mm * std::sqrt(1.0 + ramp_ratio * ramp_ratio));
+  std::vector<std::string> comments = {
+      "CUTCALC POLYGON HOLE N" + std::to_string(layout.N) + " D" + fmt4(layout.d_mm) + " A" +
+          fmt4(layout.a_mm),
+      "ROTOR " + std::to_string(layout.N - 1) + " CORNERS ON DIAMETER " + fmt4(2.0 * layout.r_mm) +
+          " ECCENTRICITY " + fmt4(layout.e_mm),
+      "LOOP LENGTH " + fmt4(L_p) + " EXACT " + fmt4(layout.exact_loop_length_mm) +
+          " BLOCKS PER LOOP " + std::to_string(loop.blocks.size()) + " TOLERANCE " +
+          fmt4(layout.tolerance_mm) + " DEVIATION " + fmt4(layout.deviation_mm),
+      "DEPTH " + fmt4(layout.depth_mm) + " IN " + std::to_string(layout.layers) + " LAYERS OF " +
+          fmt4(layout.dz_mm) + " STEP DOWN " + fmt4(layout.step_down_mm) + " LOOPS PER LAYER " +
+          std::to_string(layout.loops_per_layer) + " FIRST LOOP OF A LAYER A HELICAL RAMP"};
+  if (c_axis) {
+    comments.push_back("SPINDLE AS ROTARY AXIS C IN POSITION MODE: C0 = CORNER 0 POINTING -Y");
+    comments.push_back("C = MINUS ROTOR TURN IN DEGREES CUMULATIVE. G94 F " + flat_F +
+                       " MM PER MIN");
+  } else {
+    comments.push_back("G95 FEED PER SPINDLE REV " + flat_F + " AT " +
+                       fmt4(layout.spindle_speed_rpm) + " RPM. RAMP LOOPS " +
+                       (ramp_feed_along_projection ? flat_F + " ALONG THE ARC PROJECTION (HTG = 0)"
+                                                   : ramp_F + " ALONG THE HELIX"));
+  }
+  comments.push_back("FRAME: HOLE CENTRE X0 Y0 TOP FACE Z0 SIDE 0 AT Y-" + fmt4(0.5 * layout.d_mm) +
+                     " PATH G3 CCW ROTOR CW. " + std::to_string(layout.N - 1) +
+                     " LOOPS PER SPINDLE REV");
+  return comments;
+}
+
+// Section 5, P22, P23
+std::string write_program(const ProgramLayout& layout, const PrintedLoop& loop) {
+  Lines out;
+  out.reserve(body_size(layout, loop));
+  out.line("%");
+  for (const std::string& comment : program_comments(layout, loop)) {
+    out.line("(" + comment + ")");
+  }
+  out.line("G21 G17 G90 G40 G80 G94");
+  out.word('G', "0").word('Z', fmt4(layout.safe_z_mm)).end_line();
+  BodyStyle style;
+  style.words = &program::words_of(program::Dialect::linuxcnc);
+  style.spindle_speed = fmt4(layout.spindle_speed_rpm);
+  write_body(out, layout, loop, style);
   out.line("M30");
   out.line("%");
   return out.take();
+}
+
+std::string write_dialect_program(const ProgramLayout& layout, const PrintedLoop& loop,
+                                  const std::vector<std::string>& comments,
+                                  const program::ProgramOptions& options) {
+  const int decimals = program::decimals_of(options);
+  BodyStyle style;
+  style.fmt = {decimals, options.units == program::Units::inch ? 1.0 / program::kMmPerInch : 1.0};
+  style.words = &program::words_of(options.dialect);
+  style.spindle_speed = program::spindle_text(layout.spindle_speed_rpm, options.dialect, decimals);
+  style.ramp_feed_along_projection = options.dialect == program::Dialect::fanuc;
+  style.coolant = options.coolant;
+  Lines body;
+  body.reserve(body_size(layout, loop));
+  write_body(body, layout, loop, style);
+  return program::program_header(comments, options) +
+         program::safe_start_text(
+             {options.tool_number, options.tool_length_offset, layout.safe_z_mm}, options) +
+         body.take() + program::program_end(options);
 }
 
 }  // namespace cutcalc::domain::polygon::detail

@@ -9,11 +9,20 @@
 
 #include "domain/polygon/biarc_fit.h"
 #include "domain/polygon/polygon_hole.h"
+#include "domain/program/program_options.h"
 
 namespace cutcalc::domain::polygon::detail {
 
 // printf("%.4f"), with -0.0000 written 0.0000.
 std::string fmt4(double value);
+
+// How the program prints its numbers: today's program 4 decimals in mm; with a `program` object
+// `decimals` in the program's units (programs.md section 4).
+struct NumberFormat {
+  int decimals = 4;
+  double units_per_mm = 1.0;                              // 1 / 25.4 for inch
+  [[nodiscard]] std::string operator()(double mm) const;  // a length or feed given in mm
+};
 
 // One arc block of a loop as printed (the same in every loop), with the unrounded rotor
 // rotation and fitted path length at its end (mm).
@@ -34,10 +43,11 @@ struct PrintedLoop {
   double fitted_length = 0.0;   // L_u: the unrounded arcs (mm)
 };
 
-// P23: the blocks of one loop in mm (`scale` = d turns the unit-diameter blocks into mm), I and J
-// from the unrounded centre minus the unrounded start (normative), and L_p from the printed
-// numbers as LinuxCNC interpolates them.
-PrintedLoop print_loop(const std::vector<LoopBlock>& blocks, double scale);
+// P23: the blocks of one loop (`scale` = d turns the unit-diameter blocks into mm) printed with
+// `format`, I and J from the unrounded centre minus the unrounded start (normative), and L_p from
+// the printed numbers as LinuxCNC interpolates them, in mm.
+PrintedLoop print_loop(const std::vector<LoopBlock>& blocks, double scale,
+                       const NumberFormat& format = {});
 
 // P22: the layers: n = ceil(depth / step - 1e-9) (at least 1), dz = depth / n.
 struct Layers {
@@ -68,8 +78,22 @@ struct ProgramLayout {
 };
 
 // Section 5 (skeleton), P22 (layers, ramps with Z linear in unrounded path length), P23 (F
-// words), and the C words of the c_axis mode.
+// words), and the C words of the c_axis mode: today's program.
 std::string write_program(const ProgramLayout& layout, const PrintedLoop& loop);
+
+// Today's comment lines (their text, numbers in mm), in order; `ramp_feed_along_projection`: the
+// ramp loops take the flat F (fanuc).
+std::vector<std::string> program_comments(const ProgramLayout& layout, const PrintedLoop& loop,
+                                          bool ramp_feed_along_projection = false);
+
+// The program in a dialect (programs.md section 2, polygon): the dialect's header with today's
+// comments (`comments`: warnings after the first), [tool change] G0 [G43] Z{safe} [H], today's
+// body from S M3 (c_axis: G0 X Y C0) with [M8|M7], through M5 (c_axis: the last G0 Z) and [M9],
+// the dialect's end. `loop` printed with the options' NumberFormat. A fanuc ramp loop takes the
+// flat F: it applies F along the arc's projection on the plane.
+std::string write_dialect_program(const ProgramLayout& layout, const PrintedLoop& loop,
+                                  const std::vector<std::string>& comments,
+                                  const program::ProgramOptions& options);
 
 // P22: the number of arc blocks of the program as counted in section 10.
 double program_arc_blocks(double layers, int loops_per_layer, std::size_t blocks_per_loop);

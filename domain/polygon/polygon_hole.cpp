@@ -14,6 +14,7 @@
 #include "domain/polygon/gcode_writer.h"
 #include "domain/polygon/hole_prediction.h"
 #include "domain/polygon/polygon_geometry.h"
+#include "domain/polygon/printed_deviation.h"
 #include "domain/polygon/rotor.h"
 
 namespace cutcalc::domain::polygon {
@@ -73,8 +74,14 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
                       "step_down_mm, fewer loops_per_layer or a larger tolerance_mm");
   }
 
-  // P23
-  const detail::PrintedLoop loop = detail::print_loop(blocks, d);
+  // P23, in the program's units and decimals when a `program` object is given.
+  detail::NumberFormat format;
+  if (params.program) {
+    format.decimals = program::decimals_of(*params.program);
+    format.units_per_mm =
+        params.program->units == program::Units::inch ? 1.0 / program::kMmPerInch : 1.0;
+  }
+  const detail::PrintedLoop loop = detail::print_loop(blocks, d, format);
 
   PolygonHoleResult result;
   result.blocks_per_loop = static_cast<int>(blocks.size());
@@ -114,13 +121,66 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   layout.spindle_speed_rpm = params.spindle_speed_rpm;
   layout.synchronization = params.synchronization;
   layout.feed_per_rev_mm = result.feed_per_rev_mm;
-  result.program = detail::write_program(layout, loop);
-  result.file_name = "polygon-hole-N" + std::to_string(N) + "-d" + detail::fmt4(d) + ".ngc";
+  if (!params.program) {
+    result.program = detail::write_program(layout, loop);
+    result.file_name = "polygon-hole-N" + std::to_string(N) + "-d" + detail::fmt4(d) + ".ngc";
+    return result;
+  }
+  const program::ProgramOptions& options = *params.program;
+  result.printed_path_deviation_mm =
+      detail::printed_path_deviation_mm(path, d, blocks, loop, 1.0 / format.units_per_mm);
+  // programs.md section 5: the limits, the Fanuc S word, the printed deviation, then today's.
+  const double flat_feed = params.spindle_speed_rpm * result.feed_per_rev_mm;
+  const double ramp_ratio = layout.dz_mm / result.loop_length_mm;
+  const bool ramp_along_helix = params.synchronization == Synchronization::feed_per_rev &&
+                                options.dialect != program::Dialect::fanuc;
+  std::vector<ProgramWarning> warnings;
+  for (const auto& w : program::limit_warnings(
+           params.spindle_speed_rpm,
+           {flat_feed,
+            ramp_along_helix ? flat_feed * std::sqrt(1.0 + ramp_ratio * ramp_ratio) : flat_feed},
+           params.machine)) {
+    warnings.push_back({w.code, w.detail});
+  }
+  if (options.dialect == program::Dialect::fanuc &&
+      params.synchronization == Synchronization::feed_per_rev &&
+      std::fabs(std::floor(params.spindle_speed_rpm + 0.5) - params.spindle_speed_rpm) > 1e-9) {
+    warnings.push_back({"spindle_speed_rounded",
+                        "a Fanuc S word takes no decimals: the spindle speed is printed rounded "
+                        "half up (the feed per revolution is exact)"});
+  }
+  if (*result.printed_path_deviation_mm > params.tolerance_mm) {
+    warnings.push_back(
+        {"rounding_exceeds_tolerance",
+         "the program as printed deviates " + detail::fmt4(*result.printed_path_deviation_mm) +
+             " mm from the exact path, more than tolerance_mm: print more decimals"});
+  }
+  warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
+  result.warnings = std::move(warnings);
+
+  std::vector<std::string> comments =
+      detail::program_comments(layout, loop, options.dialect == program::Dialect::fanuc);
+  std::vector<std::string> warning_lines;
+  for (const ProgramWarning& warning : result.warnings) {
+    warning_lines.push_back("WARNING " + warning.code + ": " + warning.detail);
+  }
+  comments.insert(comments.begin() + 1, warning_lines.begin(), warning_lines.end());
+  if (params.synchronization == Synchronization::c_axis &&
+      options.dialect != program::Dialect::linuxcnc) {
+    comments.push_back(
+        "SWITCH THE SPINDLE TO ITS C AXIS POSITION MODE BEFORE THIS PROGRAM AND BACK AFTER IT: "
+        "A MACHINE-SPECIFIC COMMAND, NOT WRITTEN HERE");
+  }
+  result.program = detail::write_dialect_program(layout, loop, comments, options);
+  result.file_name = program::file_name(options);
   return result;
 }
 
 std::string program_with_warning_comments(const PolygonHoleResult& result) {
   const std::string& program = result.program;
+  if (result.printed_path_deviation_mm) {
+    return program;  // a dialect program has its warning lines already
+  }
   // After the first comment line: the line after the leading "%".
   const std::size_t first_line_end = program.find('\n');
   const std::size_t comment_end = first_line_end == std::string::npos

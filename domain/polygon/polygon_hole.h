@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "domain/common/result.h"
+#include "domain/program/program_options.h"
 
 namespace cutcalc::domain::polygon {
 
@@ -28,10 +29,13 @@ struct PolygonHoleParams {
   std::optional<int> loops_per_layer;  // 1..100; default N - 1 (one spindle revolution)
   double safe_z_mm = 5.0;              // > 0
   double block_time_ms = 2.0;          // the control's block processing time, > 0
+  // The `program` object (programs.md section 2): absent, today's program byte for byte.
+  std::optional<program::ProgramOptions> program;
+  program::MachineLimits machine;  // limits that turn into warnings (programs.md section 5)
 };
 
 struct ProgramWarning {
-  std::string code;    // feed_exceeds_block_rate, phase_not_locked
+  std::string code;    // programs.md section 5 order; feed_exceeds_block_rate, phase_not_locked
   std::string detail;  // English, for people
 };
 
@@ -47,7 +51,10 @@ struct PolygonHoleResult {
   double corner_gap_mm = 0.0;                      // g (P15)
   double max_feed_by_block_rate_mm_per_min = 0.0;  // P27
   std::vector<ProgramWarning> warnings;
-  std::string file_name;  // polygon-hole-N{N}-d{d with 4 decimals}.ngc
+  std::string file_name;  // polygon-hole-N{N}-d{d with 4 decimals}.ngc, or the dialect's
+  // With a `program` object: P20 on the arcs as printed (programs.md section 4), mm; the
+  // warnings are then comment lines of the program itself.
+  std::optional<double> printed_path_deviation_mm;
 };
 
 // P1-P27. Errors: tolerance_unreachable (m > 1000 biarcs needed), program_too_large (more than

@@ -9,24 +9,6 @@
 namespace cutcalc::domain::program {
 namespace {
 
-// The words each dialect writes for the same thing (section 3 table).
-struct DialectWords {
-  const char* rapid;        // G0 / G00
-  const char* feed;         // G1 / G01
-  const char* spindle_on;   // M3 / M03
-  const char* spindle_off;  // M5 / M05
-  const char* flood;        // M8 / M08
-  const char* mist;         // M7 / M07
-  const char* coolant_off;  // M9 / M09
-  const char* tool_change;  // M6 / M06
-};
-
-const DialectWords& words_of(Dialect dialect) {
-  static constexpr DialectWords kShort{"G0", "G1", "M3", "M5", "M8", "M7", "M9", "M6"};
-  static constexpr DialectWords kFanuc{"G00", "G01", "M03", "M05", "M08", "M07", "M09", "M06"};
-  return dialect == Dialect::fanuc ? kFanuc : kShort;
-}
-
 // Concatenation by append: GCC 12 at -O3 reports a false -Wrestrict on `"literal" + std::string`.
 std::string cat(std::initializer_list<std::string_view> parts) {
   std::string out;
@@ -53,10 +35,6 @@ class Writer {
     text_.append(text);
     text_.push_back('\n');
   }
-  void comment(std::string_view text) {
-    const std::string body = comment_text(text, options_.dialect);
-    line(options_.dialect == Dialect::sinumerik ? cat({"; ", body}) : cat({"(", body, ")"}));
-  }
   std::string number(double mm) const {
     return format_fixed(to_program_units(mm, options_.units), decimals_);
   }
@@ -67,60 +45,10 @@ class Writer {
     if (to.z_mm) out.append(" Z").append(number(*to.z_mm));
     return out;
   }
-  std::string work_offset() const { return cat({"G", std::to_string(options_.work_offset)}); }
 
-  void header(const ProgramModel& model) {
-    const bool inch = options_.units == Units::inch;
-    switch (options_.dialect) {
-      case Dialect::linuxcnc:
-        line("%");
-        line(cat({"(", options_.name, ")"}));
-        for (const auto& text : model.comments) comment(text);
-        line(cat({inch ? "G20" : "G21", " G17 G90 G40 G49 G80 G94"}));
-        break;
-      case Dialect::fanuc: {
-        line("%");
-        std::array<char, 16> number{};
-        std::snprintf(number.data(), number.size(), "O%04d", options_.program_number);
-        line(cat({number.data(), " (", options_.name, ")"}));
-        for (const auto& text : model.comments) comment(text);
-        line(inch ? "G20" : "G21");
-        line("G17 G40 G49 G80 G90 G94");
-        break;
-      }
-      case Dialect::sinumerik:
-        line(cat({"; ", options_.name}));
-        for (const auto& text : model.comments) comment(text);
-        line(cat({"G17 ", inch ? "G700" : "G710", " G40 G90 G94"}));
-        break;
-    }
-    line(work_offset());
-  }
-
-  void end() {
-    line("M30");
-    if (options_.dialect != Dialect::sinumerik) line("%");
-  }
-
-  void block(const SafeStart& start) {
-    const std::string z = number(start.safe_z_mm);
-    const std::string tool = start.tool_number ? std::to_string(*start.tool_number) : "";
-    if (options_.dialect == Dialect::sinumerik) {
-      if (start.tool_number) {
-        line(cat({"T", tool}));
-        line(words_.tool_change);
-      }
-      line(start.tool_length_offset ? "D1" : "D0");
-      line(cat({words_.rapid, " Z", z}));
-      return;
-    }
-    if (start.tool_number) line(cat({"T", tool, " ", words_.tool_change}));
-    if (start.tool_length_offset && start.tool_number) {
-      line(cat({words_.rapid, " G43 Z", z, " H", tool}));
-    } else {
-      line(cat({words_.rapid, " Z", z}));
-    }
-  }
+  void header(const ProgramModel& model) { text_ += program_header(model.comments, options_); }
+  void end() { text_ += program_end(options_); }
+  void block(const SafeStart& start) { text_ += safe_start_text(start, options_); }
   void block(const Rapid& rapid) { line(cat({words_.rapid, axes(rapid.to)})); }
   void block(const Feed& feed) {
     std::string text = cat({words_.feed, axes(feed.to)});
@@ -168,6 +96,72 @@ double to_program_units(double mm, Units units) {
 std::string spindle_text(double rpm, Dialect dialect, int decimals) {
   if (dialect == Dialect::fanuc) return format_fixed(std::floor(rpm + 0.5), 0);
   return format_fixed(rpm, decimals);
+}
+
+const DialectWords& words_of(Dialect dialect) {
+  static constexpr DialectWords kShort{"G0", "G1", "G3", "M3", "M5", "M8", "M7", "M9", "M6"};
+  static constexpr DialectWords kFanuc{"G00", "G01", "G03", "M03", "M05",
+                                       "M08", "M07", "M09", "M06"};
+  return dialect == Dialect::fanuc ? kFanuc : kShort;
+}
+
+namespace {
+
+std::string comment_line(std::string_view text, Dialect dialect) {
+  const std::string body = comment_text(text, dialect);
+  return dialect == Dialect::sinumerik ? cat({"; ", body, "\n"}) : cat({"(", body, ")\n"});
+}
+
+}  // namespace
+
+std::string program_header(const std::vector<std::string>& comments,
+                           const ProgramOptions& options) {
+  const bool inch = options.units == Units::inch;
+  std::string out;
+  switch (options.dialect) {
+    case Dialect::linuxcnc:
+      out = cat({"%\n(", options.name, ")\n"});
+      for (const auto& text : comments) out += comment_line(text, options.dialect);
+      out += cat({inch ? "G20" : "G21", " G17 G90 G40 G49 G80 G94\n"});
+      break;
+    case Dialect::fanuc: {
+      std::array<char, 16> number{};
+      std::snprintf(number.data(), number.size(), "O%04d", options.program_number);
+      out = cat({"%\n", number.data(), " (", options.name, ")\n"});
+      for (const auto& text : comments) out += comment_line(text, options.dialect);
+      out += cat({inch ? "G20" : "G21", "\nG17 G40 G49 G80 G90 G94\n"});
+      break;
+    }
+    case Dialect::sinumerik:
+      out = cat({"; ", options.name, "\n"});
+      for (const auto& text : comments) out += comment_line(text, options.dialect);
+      out += cat({"G17 ", inch ? "G700" : "G710", " G40 G90 G94\n"});
+      break;
+  }
+  return out + cat({"G", std::to_string(options.work_offset), "\n"});
+}
+
+std::string safe_start_text(const SafeStart& start, const ProgramOptions& options) {
+  const DialectWords& words = words_of(options.dialect);
+  const std::string z =
+      format_fixed(to_program_units(start.safe_z_mm, options.units), decimals_of(options));
+  const std::string tool = start.tool_number ? std::to_string(*start.tool_number) : "";
+  if (options.dialect == Dialect::sinumerik) {
+    std::string out;
+    if (start.tool_number) out += cat({"T", tool, "\n", words.tool_change, "\n"});
+    out += start.tool_length_offset ? "D1\n" : "D0\n";
+    return out + cat({words.rapid, " Z", z, "\n"});
+  }
+  std::string out;
+  if (start.tool_number) out += cat({"T", tool, " ", words.tool_change, "\n"});
+  if (start.tool_length_offset && start.tool_number) {
+    return out + cat({words.rapid, " G43 Z", z, " H", tool, "\n"});
+  }
+  return out + cat({words.rapid, " Z", z, "\n"});
+}
+
+std::string program_end(const ProgramOptions& options) {
+  return options.dialect == Dialect::sinumerik ? "M30\n" : "M30\n%\n";
 }
 
 std::string write_program(const ProgramModel& model, const ProgramOptions& options) {

@@ -8,11 +8,33 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "domain/program/program_model.h"
 #include "domain/program/program_options.h"
 
 namespace cutcalc::domain::program {
+
+// The words each dialect writes for the same thing (section 3 table).
+struct DialectWords {
+  const char* rapid;        // G0 / G00
+  const char* feed;         // G1 / G01
+  const char* arc_ccw;      // G3 / G03
+  const char* spindle_on;   // M3 / M03
+  const char* spindle_off;  // M5 / M05
+  const char* flood;        // M8 / M08
+  const char* mist;         // M7 / M07
+  const char* coolant_off;  // M9 / M09
+  const char* tool_change;  // M6 / M06
+};
+const DialectWords& words_of(Dialect dialect);
+
+// Section 3, the parts of a program around its body, each a run of whole lines: the start and
+// name line, the comment lines, the units and modal lines and the work offset; the tool change
+// and first move to the safe height; the end.
+std::string program_header(const std::vector<std::string>& comments, const ProgramOptions& options);
+std::string safe_start_text(const SafeStart& start, const ProgramOptions& options);
+std::string program_end(const ProgramOptions& options);
 
 // printf("%.*f", decimals, value) without the sign of a value that prints as zero.
 std::string format_fixed(double value, int decimals);

@@ -13,7 +13,7 @@
 //   - the displayed text is that value rounded (to the decimals shown) with its unit next to it;
 //   - the diagrams have their parts (data-role) with non-empty geometry, the dimension texts of the
 //     entry scheme match L_vr and X_n, the polygon has N vertices;
-//   - polygon: the program <pre> is the API's program, the Download .ngc button downloads a *.ngc
+//   - polygon: the program <pre> is the API's program, the Download program button downloads a *.ngc
 //     file whose content equals the API's text/plain answer to the same request.
 // One invalid input (cutter diameter -5) must show the API's own message for that pointer next to
 // the input, with aria-invalid and aria-describedby; a resubmit clears it. At 375 px and 1280 px,
@@ -776,7 +776,7 @@ describe('calculator page at 1280 px', () => {
         assert.ok(c.label, `#${s.id}-form: control ${c.name} (#${c.id}) has no <label for>`);
       }
     }
-    assert.deepEqual(layout.download, { type: 'button', text: 'Download .ngc', disabled: true }, '#polygon-download before any calculation');
+    assert.deepEqual(layout.download, { type: 'button', text: 'Download program', disabled: true }, '#polygon-download before any calculation');
     assert.equal(layout.program, 'PRE', '#polygon-program must be a <pre>');
     // Labels name quantity, symbol and unit (e.g. "Cutter diameter D, mm").
     const entry = layout.sections.find(s => s.id === 'entry');

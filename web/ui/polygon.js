@@ -27,7 +27,7 @@ export function init() {
   let calculated = null; // the body of the last successful calculation
 
   onCalculate(form, async () => {
-    const body = readBody(form);
+    const body = withoutDefaultProgram(readBody(form));
     const answer = await postWithOptIn(PATH, body, 'include_geometry', true);
     result.replaceChildren();
     if (!answer.ok) {
@@ -223,4 +223,17 @@ function cornerDiagram(geometry, body) {
     { cls: 's-polygon', label: 'ideal polygon' },
     { cls: 's-predicted-hole', label: 'predicted hole', shape: 'area' },
   ]);
+}
+
+// The `program` object only when it asks for something: without it the service writes today's
+// LinuxCNC mm program, byte for byte.
+function withoutDefaultProgram(body) {
+  const p = body.program ?? {};
+  const plain =
+    (p.dialect ?? 'linuxcnc') === 'linuxcnc' &&
+    (p.units ?? 'mm') === 'mm' &&
+    p.tool_number === undefined &&
+    !p.tool_length_offset;
+  if (plain) delete body.program;
+  return body;
 }
