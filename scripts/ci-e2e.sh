@@ -3,7 +3,8 @@
 # Chromium, driven by Playwright (playwright-core from tools/e2e, never a downloaded browser), against
 # a live release cutcalc: every section filled with a reference case, submitted, its numbers and
 # diagrams checked, the G-code download, an invalid input's message, keyboard-only use and no
-# horizontal scroll at 375 px, and no console error or failed request (tests/e2e/*.test.mjs).
+# horizontal scroll at 375 px, and no console error or failed request (tests/e2e/*.test.mjs); CORS
+# from pages on other loopback origins against a second cutcalc with --cors-origin (cors.test.mjs).
 # Screenshots of the final page at 1280 px and 375 px go to build/e2e/ (for people, not assertions).
 #
 # Environment (all optional):
@@ -85,7 +86,7 @@ echo "=== e2e: node --test ${tests[*]} (cutcalc $URL, $BIN)"
 mkdir -p "$E2E_ARTIFACT_DIR"
 rm -f "$E2E_ARTIFACT_DIR"/*.png
 status=0
-CUTCALC_URL=$URL CHROMIUM_PATH=$CHROMIUM node --test --test-reporter=spec "${tests[@]}" || status=$?
+CUTCALC_URL=$URL CUTCALC_BIN=$BIN CHROMIUM_PATH=$CHROMIUM node --test --test-reporter=spec "${tests[@]}" || status=$?
 kill -0 "$CUTCALC_PID" 2>/dev/null || { tail -n 30 "$WORK/cutcalc.log" >&2; echo "ci-e2e: cutcalc died during the test" >&2; status=1; }
 ENDED=$(date +%s)
 if [[ $status -ne 0 ]]; then

@@ -27,13 +27,11 @@ void CorsPolicy::decorate(const httplib::Request& req, httplib::Response& res) c
   res.set_header("Access-Control-Expose-Headers", "X-Request-Id, Content-Disposition");
 }
 
-void CorsPolicy::answer_options(const httplib::Request& req, httplib::Response& res,
-                                const std::string& allow) const {
+void CorsPolicy::answer_options(httplib::Response& res, const std::string& allow) {
   res.status = 204;
-  res.set_header("Allow", allow + ", OPTIONS");
-  decorate(req, res);
+  res.set_header("Allow", allow);
   if (res.has_header("Access-Control-Allow-Origin")) {
-    res.set_header("Access-Control-Allow-Methods", allow + ", OPTIONS");
+    res.set_header("Access-Control-Allow-Methods", allow);
     res.set_header("Access-Control-Allow-Headers", "Content-Type, Accept, X-Request-Id");
     res.set_header("Access-Control-Max-Age", "600");
   }

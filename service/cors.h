@@ -14,13 +14,13 @@ class CorsPolicy {
  public:
   explicit CorsPolicy(std::vector<std::string> allowed_origins);
 
-  // Adds the CORS response headers when the request's Origin is allowed.
+  // Adds the CORS response headers when the request's Origin is allowed. Call it once per
+  // response: every header it sets is appended.
   void decorate(const httplib::Request& req, httplib::Response& res) const;
 
-  // An OPTIONS request to a known route: 204 with Allow, plus the preflight answer when the
-  // Origin is allowed. `allow` is the route's method list.
-  void answer_options(const httplib::Request& req, httplib::Response& res,
-                      const std::string& allow) const;
+  // An OPTIONS request to a known route, after decorate(): 204 with Allow, plus the rest of the
+  // preflight answer when the Origin is allowed. `allow` is the route's method list.
+  static void answer_options(httplib::Response& res, const std::string& allow);
 
  private:
   [[nodiscard]] bool allows(std::string_view origin) const;

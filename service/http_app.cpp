@@ -155,15 +155,16 @@ void HttpApp::install_middleware() {
     t_request.request_id = is_acceptable_request_id(client_id) ? client_id : generate_request_id();
     res.set_header(kRequestIdHeader, t_request.request_id);
 
+    // Once per response, whatever answers it (set_header appends, so a second call repeats them).
+    cors_.decorate(req, res);
     const RouteEntry* route = routes_.find(req.path);
     if (route == nullptr) {
       write_problem(req, res, {api::ProblemKind::not_found, "no such resource: " + req.path, {}});
       return httplib::Server::HandlerResponse::Handled;
     }
     t_request.route = route->path.c_str();
-    cors_.decorate(req, res);
     if (req.method == "OPTIONS") {
-      cors_.answer_options(req, res, route->allow);
+      CorsPolicy::answer_options(res, route->allow);
       return httplib::Server::HandlerResponse::Handled;
     }
     if (!RouteTable::allows(*route, req.method)) {
@@ -231,7 +232,7 @@ void HttpApp::install_middleware() {
 
 void HttpApp::install_routes() {
   for (const api::CalculationRoute& route : api::calculation_routes()) {
-    routes_.add(route.path, "POST");
+    routes_.add(route.path, RouteMethod::post);
     server_->Post(
         route.path, [handler = route.handler](const httplib::Request& req, httplib::Response& res) {
           const std::string content_type = req.get_header_value("Content-Type");
@@ -242,12 +243,12 @@ void HttpApp::install_routes() {
         });
   }
 
-  routes_.add("/healthz", "GET, HEAD");
+  routes_.add("/healthz", RouteMethod::get);
   server_->Get("/healthz", [](const httplib::Request&, httplib::Response& res) {
     reply_json(res, {{"status", "ok"}});
   });
 
-  routes_.add("/readyz", "GET, HEAD");
+  routes_.add("/readyz", RouteMethod::get);
   server_->Get("/readyz", [this](const httplib::Request& req, httplib::Response& res) {
     if (draining_.load()) {
       write_problem(req, res, {api::ProblemKind::unavailable, "shutting down", {}});
@@ -256,7 +257,7 @@ void HttpApp::install_routes() {
     reply_json(res, {{"status", "ready"}});
   });
 
-  routes_.add("/version", "GET, HEAD");
+  routes_.add("/version", RouteMethod::get);
   server_->Get("/version", [](const httplib::Request&, httplib::Response& res) {
     reply_json(res, {{"name", "cutcalc"},
                      {"version", build_version()},
@@ -264,14 +265,14 @@ void HttpApp::install_routes() {
                      {"build_type", build_type()}});
   });
 
-  routes_.add("/metrics", "GET, HEAD");
+  routes_.add("/metrics", RouteMethod::get);
   server_->Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
     res.set_content(metrics_.render() +
                         render_connection_metrics(server_->counters(), server_->open_connections()),
                     "text/plain; version=0.0.4; charset=utf-8");
   });
 
-  routes_.add("/openapi.yaml", "GET, HEAD");
+  routes_.add("/openapi.yaml", RouteMethod::get);
   server_->Get("/openapi.yaml", [](const httplib::Request&, httplib::Response& res) {
     const std::string_view yaml = embedded_openapi_yaml();
     res.set_content(yaml.data(), yaml.size(), "application/yaml");

@@ -29,6 +29,8 @@ class HttpApp {
   // Serves a connected stream socket as if it had been accepted (takes ownership); for the
   // byte-level fuzzer, which talks to the engine over a socketpair.
   void serve_connection(int sock);
+  // Every path served and its Allow value (for tests that must cover every route).
+  [[nodiscard]] const RouteTable& routes() const { return routes_; }
 
  private:
   // The response for an error the engine answers by itself (framing, size, connection cap).

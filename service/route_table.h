@@ -1,5 +1,6 @@
 #pragma once
-// Every path the service answers and the methods it accepts there, for 404/405 and metric labels.
+// Every path the service answers and the methods it accepts there, for 404/405, OPTIONS, CORS
+// preflights and metric labels.
 
 #include <string>
 #include <string_view>
@@ -7,16 +8,24 @@
 
 namespace cutcalc::service {
 
+// The method a path's handler takes.
+enum class RouteMethod { get, post };
+
 struct RouteEntry {
   std::string path;
-  std::string allow;  // the Allow header value, e.g. "POST" or "GET, HEAD"
+  std::string allow;  // the Allow header value: "GET, HEAD, OPTIONS" or "POST, OPTIONS"
 };
 
 class RouteTable {
  public:
-  void add(std::string path, std::string allow) {
-    routes_.push_back({std::move(path), std::move(allow)});
+  // The one place that says which methods a path answers (405's and OPTIONS' Allow, a preflight's
+  // Access-Control-Allow-Methods): its handler's method, HEAD with GET (the library answers HEAD
+  // from the GET handler, without the body) and OPTIONS everywhere (answered before routing).
+  void add(std::string path, RouteMethod method) {
+    routes_.push_back(
+        {std::move(path), method == RouteMethod::get ? "GET, HEAD, OPTIONS" : "POST, OPTIONS"});
   }
+  [[nodiscard]] const std::vector<RouteEntry>& entries() const { return routes_; }
   // The entry for an exact path, or nullptr.
   [[nodiscard]] const RouteEntry* find(std::string_view path) const {
     for (const RouteEntry& route : routes_) {

@@ -30,7 +30,7 @@ const WebAsset* find_web_asset(std::string_view url_path) {
 
 void install_web_routes(httplib::Server& server, RouteTable& routes) {
   for (const WebAsset& asset : web_assets()) {
-    routes.add(std::string(asset.url_path), "GET, HEAD");
+    routes.add(std::string(asset.url_path), RouteMethod::get);
     server.Get(
         regex_literal(asset.url_path), [&asset](const httplib::Request&, httplib::Response& res) {
           res.set_header("Content-Security-Policy", kWebContentSecurityPolicy);

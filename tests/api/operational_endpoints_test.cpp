@@ -93,7 +93,7 @@ TEST(Operational, WrongMethodIsNotAllowedWithAllowHeader) {
   EXPECT_EQ(reply.content_type, "application/problem+json");
   bool has_allow = false;
   for (const auto& [name, value] : reply.headers) {
-    has_allow = has_allow || (name == "Allow" && value == "POST");
+    has_allow = has_allow || (name == "Allow" && value == "POST, OPTIONS");
   }
   EXPECT_TRUE(has_allow);
   EXPECT_EQ(post("/healthz", "{}").status, 405);

@@ -31,32 +31,18 @@
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const repo = path.resolve(here, '..', '..');
-// playwright-core lives in tools/e2e/node_modules (npm ci there); resolve it from that package.
-const requireFromTools = createRequire(path.join(repo, 'tools', 'e2e', 'package.json'));
-const { chromium } = requireFromTools('playwright-core');
+import { CHROMIUM, CHROMIUM_ARGS, chromium, env, reference, repo } from './browser.mjs';
 
-const env = (name, fallback) => {
-  const value = process.env[name];
-  return value !== undefined && value !== '' ? value : fallback;
-};
 const API = (env('CUTCALC_URL') ?? '').replace(/\/$/, '');
 if (!API) throw new Error('CUTCALC_URL is not set (the base URL of a running cutcalc)');
 const PAGE_URL = env('E2E_PAGE_URL', `${API}/`);
-const REFERENCE_DIR = path.resolve(repo, env('CUTCALC_REFERENCE_DIR', path.join('..', 'shared', 'reference')));
 const ARTIFACT_DIR = path.resolve(repo, env('E2E_ARTIFACT_DIR', path.join('build', 'e2e')));
-const CHROMIUM = env('CHROMIUM_PATH', '/usr/bin/chromium');
-const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'];
 const WAIT_MS = 20000; // one API answer plus rendering, on a busy two-core machine
 const TEST_MS = 120000;
 
 // ------------------------------------------------------------------ reference cases and tolerances
-const reference = name => JSON.parse(readFileSync(path.join(REFERENCE_DIR, name), 'utf8'));
 
 // Tolerance rules, as each reference file's `compare` states them.
 const timeOrLength = tol => ptr => {

@@ -220,11 +220,12 @@ TEST(WebPage, EmbeddedBytesEqualTheFilesInWeb) {
 }
 
 TEST(WebPage, OpenApiListsExactlyTheEmbeddedAssets) {
-  // openapi.yaml documents /ui/{asset} with an enum of the file names: it must name every asset
-  // under web/ui/ and nothing else, or the contract and the binary disagree.
+  // openapi.yaml documents /ui/{asset}'s parameter (components/parameters/Asset) with an enum of
+  // the file names: it must name every asset under web/ui/ and nothing else, or the contract and
+  // the binary disagree.
   const std::string yaml(service::embedded_openapi_yaml());
-  const auto path = yaml.find("\n  /ui/{asset}:\n");
-  ASSERT_NE(path, std::string::npos) << "openapi.yaml has no /ui/{asset} path";
+  const auto path = yaml.find("\n    Asset:\n      name: asset\n");
+  ASSERT_NE(path, std::string::npos) << "openapi.yaml has no Asset parameter";
   const auto open = yaml.find("enum: [", path);
   const auto close = yaml.find(']', open);
   ASSERT_TRUE(open != std::string::npos && close != std::string::npos);
@@ -264,7 +265,7 @@ TEST(WebPage, PostAndDeleteAre405WithAllow) {
   const auto post = c->Post("/", "{}", "application/json");
   ASSERT_TRUE(post);
   EXPECT_EQ(post->status, 405);
-  EXPECT_EQ(post->get_header_value("Allow"), "GET, HEAD");
+  EXPECT_EQ(post->get_header_value("Allow"), "GET, HEAD, OPTIONS");
   EXPECT_EQ(post->get_header_value("Content-Type"), "application/problem+json");
   const auto problem = nlohmann::json::parse(post->body, nullptr, false);
   ASSERT_TRUE(problem.is_object()) << post->body;
@@ -273,7 +274,7 @@ TEST(WebPage, PostAndDeleteAre405WithAllow) {
   const auto del = c->Delete("/ui/app.css");
   ASSERT_TRUE(del);
   EXPECT_EQ(del->status, 405);
-  EXPECT_EQ(del->get_header_value("Allow"), "GET, HEAD");
+  EXPECT_EQ(del->get_header_value("Allow"), "GET, HEAD, OPTIONS");
 }
 
 TEST(WebPage, MetricsLabelThePageByItsFixedRoutes) {

@@ -34,12 +34,13 @@ class OpenApiContract {
   // Violations of the response schema for (method, path template, status, Content-Type). The
   // method is case-insensitive ("POST", "get"); the path is a template exactly as under `paths`
   // ("/v1/entry-length"). Media type parameters in content_type are compared with the documented
-  // key: the documented ones must be present with equal values, extra ones (charset) are allowed.
+  // key: the same parameters with equal values (charset case-insensitively), none missing or extra.
   // An undocumented path, operation, status or media type is itself a violation, except:
   // an undocumented path with status 404 is checked against the document's
   // `x-cutcalc-unmatched-route` response, and an undocumented method on a documented path with
   // status 405 against the path's documented 405 response.
-  // For a response documented without content, any body other than null is a violation.
+  // For a response documented without content, any body other than null is a violation; the body
+  // of a HEAD response (absent) is not validated, its Content-Type is.
   std::vector<std::string> check_response(const std::string& method, const std::string& path,
                                           int status, const std::string& content_type,
                                           const nlohmann::json& body) const;

@@ -5,8 +5,9 @@
 
 namespace cutcalc::testing {
 
-TestServer::TestServer() {
+TestServer::TestServer(std::vector<std::string> cors_origins) {
   service::Config config;
+  config.cors_origins = std::move(cors_origins);
   config.host = "127.0.0.1";
   config.port = 0;
   config.log_level = "off";

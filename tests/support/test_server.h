@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <httplib.h>
 #include <nlohmann/json.hpp>
@@ -14,12 +15,14 @@ namespace cutcalc::testing {
 
 class TestServer {
  public:
-  TestServer();
+  // `cors_origins` as --cors-origin gives them (none: the default configuration).
+  explicit TestServer(std::vector<std::string> cors_origins = {});
   ~TestServer();
   TestServer(const TestServer&) = delete;
   TestServer& operator=(const TestServer&) = delete;
 
   [[nodiscard]] int port() const { return port_; }
+  [[nodiscard]] const service::HttpApp& app() const { return *app_; }
   // A fresh client for this server (clients are not thread-safe; use one per thread).
   [[nodiscard]] std::unique_ptr<httplib::Client> client() const;
 

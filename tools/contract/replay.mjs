@@ -169,9 +169,15 @@ function badInputCases(firstValid) {
 }
 
 function operationsCases() {
-  return ['/healthz', '/readyz', '/version', '/metrics', '/openapi.yaml'].map(p => ({
+  const cases = ['/healthz', '/readyz', '/version', '/metrics', '/openapi.yaml'].map(p => ({
     id: `ops:GET ${p}`, kind: 'operations', method: 'GET', path: p, expect: [200],
   }));
+  // Every documented HEAD and OPTIONS operation (on a path without parameters).
+  for (const o of operations.filter(o => (o.method === 'head' || o.method === 'options') && !o.path.includes('{'))) {
+    const method = o.method.toUpperCase();
+    cases.push({ id: `ops:${method} ${o.path}`, kind: 'operations', method, path: o.path, expect: [method === 'HEAD' ? 200 : 204] });
+  }
+  return cases;
 }
 
 // ------------------------------------------------------------------ HTTP
@@ -235,8 +241,8 @@ function findOperation(method, p) {
   return operations.find(o => o.path === p && o.method === m) ?? operations.find(o => o.path === p);
 }
 
-function bodyForValidation(r) {
-  if (/^application\/([a-z0-9.+-]*\+)?json\b/i.test(r.contentType) && r.status !== 204) {
+function bodyForValidation(c, r) {
+  if (/^application\/([a-z0-9.+-]*\+)?json\b/i.test(r.contentType) && r.status !== 204 && c.method !== 'HEAD') {
     return r.json === undefined ? { error: `response body is not JSON: ${r.text.slice(0, 200)}` } : { body: r.json };
   }
   return { body: r.text };
@@ -248,7 +254,7 @@ const severityName = s => (s === 0 ? 'Error' : s === 1 ? 'Warning' : s === 2 ? '
 function validateWithPrism(c, r) {
   const op = findOperation(c.method, c.path);
   if (!op) return [{ message: `no operation in the document for ${c.path}` }];
-  const b = bodyForValidation(r);
+  const b = bodyForValidation(c, r);
   if (b.error) return [{ location: ['response', 'body'], message: b.error }];
   const result = validateOutput({ resource: op, element: { statusCode: r.status, headers: r.headers, body: b.body } });
   if (result._tag === 'Right') return [];
@@ -276,7 +282,7 @@ function schemaFor(c, r) {
 function validate2020(c, r) {
   const schema = schemaFor(c, r);
   if (!schema) return [];
-  const b = bodyForValidation(r);
+  const b = bodyForValidation(c, r);
   if (b.error) return [{ location: ['response', 'body'], message: b.error }];
   let validate = compiled.get(schema);
   if (!validate) {

@@ -1,0 +1,20 @@
+// What every browser test shares: its environment, the repository, the reference cases and Debian's
+// Chromium driven by playwright-core (tools/e2e; never a downloaded browser).
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+// playwright-core lives in tools/e2e/node_modules (npm ci there); resolve it from that package.
+const requireFromTools = createRequire(path.join(repo, 'tools', 'e2e', 'package.json'));
+export const { chromium } = requireFromTools('playwright-core');
+
+export const env = (name, fallback) => {
+  const value = process.env[name];
+  return value !== undefined && value !== '' ? value : fallback;
+};
+export const REFERENCE_DIR = path.resolve(repo, env('CUTCALC_REFERENCE_DIR', path.join('..', 'shared', 'reference')));
+export const reference = name => JSON.parse(readFileSync(path.join(REFERENCE_DIR, name), 'utf8'));
+export const CHROMIUM = env('CHROMIUM_PATH', '/usr/bin/chromium');
+export const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'];
