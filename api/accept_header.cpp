@@ -64,7 +64,44 @@ std::optional<double> named_quality(std::string_view accept, std::string_view me
   return best;
 }
 
+struct LanguageRank {
+  double q = 0.0;
+  std::size_t position = 0;  // of the first range naming the language: earlier wins a tie
+};
+
+// The highest q the header gives to a range naming `language` ("ru" or "ru-..."); q 0 when none.
+LanguageRank language_rank(std::string_view header, std::string_view language) {
+  LanguageRank rank;
+  bool named = false;
+  for (std::size_t position = 0; !header.empty(); ++position) {
+    const auto comma = header.find(',');
+    const std::string_view range = header.substr(0, comma);
+    header = comma == std::string_view::npos ? std::string_view{} : header.substr(comma + 1);
+    const auto semicolon = range.find(';');
+    const std::string_view tag = trim(range.substr(0, semicolon));
+    const bool names =
+        iequals(tag, language) || (tag.size() > language.size() && tag[language.size()] == '-' &&
+                                   iequals(tag.substr(0, language.size()), language));
+    if (names) {
+      const double q =
+          semicolon == std::string_view::npos ? 1.0 : quality(range.substr(semicolon + 1));
+      if (!named) rank.position = position;
+      named = true;
+      rank.q = std::max(rank.q, q);
+    }
+  }
+  return rank;
+}
+
 }  // namespace
+
+Language preferred_language(std::string_view accept_language) {
+  const LanguageRank russian = language_rank(accept_language, "ru");
+  const LanguageRank english = language_rank(accept_language, "en");
+  const bool russian_first =
+      russian.q > english.q || (russian.q == english.q && russian.position < english.position);
+  return russian.q > 0.0 && russian_first ? Language::ru : Language::en;
+}
 
 bool prefers_plain_text(std::string_view accept) {
   const auto text = named_quality(accept, "text/plain");

@@ -1,7 +1,6 @@
 #include "api/field_reader.h"
 
 #include <cmath>
-#include <sstream>
 
 namespace cutcalc::api {
 namespace {
@@ -22,30 +21,53 @@ std::string escape_pointer_token(std::string_view key) {
   return out;
 }
 
-std::string format_bound(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
+// Whole bounds print as integers ("maximum": 12, not 12.0).
+nlohmann::json bound_value(double value) {
+  if (std::trunc(value) == value && std::fabs(value) < 1.0e15) {
+    return static_cast<std::int64_t>(value);
+  }
+  return value;
 }
 
-// The message names only the side that was violated: "must be > 0", "must be <= 1000000".
-std::optional<std::string> violated_bound(double value, const Bounds& bounds) {
+// The bounds as errors[] parameters: minimum or exclusive_minimum, maximum or exclusive_maximum.
+nlohmann::json bound_params(const Bounds& bounds) {
+  nlohmann::json params = nlohmann::json::object();
+  if (bounds.min) {
+    params[bounds.min_inclusive ? "minimum" : "exclusive_minimum"] = bound_value(*bounds.min);
+  }
+  if (bounds.max) {
+    params[bounds.max_inclusive ? "maximum" : "exclusive_maximum"] = bound_value(*bounds.max);
+  }
+  return params;
+}
+
+struct Violation {
+  ErrorCode code;
+  nlohmann::json params;
+};
+
+// A value below 0 where 0 is the limit is "must be > 0" / ">= 0"; every other bound violated names
+// the whole interval.
+std::optional<Violation> violated_bound(double value, const Bounds& bounds) {
   if (bounds.min) {
     const bool below = bounds.min_inclusive ? value < *bounds.min : value <= *bounds.min;
     if (below) {
-      return std::string(bounds.min_inclusive ? "must be >= " : "must be > ") +
-             format_bound(*bounds.min);
+      if (*bounds.min == 0.0) {
+        return Violation{
+            bounds.min_inclusive ? ErrorCode::must_not_be_negative : ErrorCode::must_be_positive,
+            bound_params(bounds)};
+      }
+      return Violation{ErrorCode::out_of_range, bound_params(bounds)};
     }
   }
   if (bounds.smallest_positive && value < *bounds.smallest_positive) {
-    return "must be >= " + format_bound(*bounds.smallest_positive) +
-           " (smaller values are below any machine's resolution)";
+    return Violation{ErrorCode::below_resolution,
+                     {{"minimum", bound_value(*bounds.smallest_positive)}}};
   }
   if (bounds.max) {
     const bool above = bounds.max_inclusive ? value > *bounds.max : value >= *bounds.max;
     if (above) {
-      return std::string(bounds.max_inclusive ? "must be <= " : "must be < ") +
-             format_bound(*bounds.max);
+      return Violation{ErrorCode::out_of_range, bound_params(bounds)};
     }
   }
   return std::nullopt;
@@ -76,13 +98,13 @@ std::string ObjectReader::child_pointer(std::string_view key) const {
   return pointer_ + "/" + escape_pointer_token(key);
 }
 
-void ObjectReader::add_error(std::string_view key, std::string detail) {
-  errors_->push_back({child_pointer(key), std::move(detail)});
+void ObjectReader::add_error(std::string_view key, ErrorCode code, nlohmann::json params) {
+  errors_->push_back({child_pointer(key), code, std::move(params)});
 }
 
-void ObjectReader::reject(std::string_view key, std::string detail) {
+void ObjectReader::reject(std::string_view key, ErrorCode code, nlohmann::json params) {
   asked_.emplace(key);
-  add_error(key, std::move(detail));
+  add_error(key, code, std::move(params));
 }
 
 std::optional<double> ObjectReader::optional_number(std::string_view key, const Bounds& bounds) {
@@ -96,16 +118,16 @@ std::optional<double> ObjectReader::optional_number(std::string_view key, const 
 std::optional<double> ObjectReader::check_number(std::string_view key, const nlohmann::json& value,
                                                  const Bounds& bounds) {
   if (!value.is_number()) {
-    add_error(key, "must be a number");
+    add_error(key, ErrorCode::not_a_number);
     return std::nullopt;
   }
   const double number = value.get<double>();
   if (!std::isfinite(number)) {
-    add_error(key, "must be a finite number");
+    add_error(key, ErrorCode::not_finite);
     return std::nullopt;
   }
-  if (const auto violation = violated_bound(number, bounds)) {
-    add_error(key, *violation);
+  if (auto violation = violated_bound(number, bounds)) {
+    add_error(key, violation->code, std::move(violation->params));
     return std::nullopt;
   }
   return number;
@@ -114,7 +136,7 @@ std::optional<double> ObjectReader::check_number(std::string_view key, const nlo
 std::optional<double> ObjectReader::required_number(std::string_view key, const Bounds& bounds) {
   if (present() && !has(key)) {
     asked_.emplace(key);
-    add_error(key, "is required");
+    add_error(key, ErrorCode::required);
     return std::nullopt;
   }
   return optional_number(key, bounds);
@@ -132,7 +154,7 @@ std::optional<std::int64_t> ObjectReader::required_integer(std::string_view key,
     return std::nullopt;
   }
   if (std::trunc(*number) != *number) {
-    add_error(key, "must be an integer");
+    add_error(key, ErrorCode::not_an_integer);
     return std::nullopt;
   }
   return static_cast<std::int64_t>(*number);
@@ -147,8 +169,8 @@ std::optional<std::vector<double>> ObjectReader::optional_number_list(std::strin
     return std::nullopt;
   }
   if (!value->is_array() || value->size() < min_items || value->size() > max_items) {
-    add_error(key, "must be a list of " + std::to_string(min_items) + " to " +
-                       std::to_string(max_items) + " numbers");
+    add_error(key, ErrorCode::wrong_list_length,
+              {{"min_items", min_items}, {"max_items", max_items}});
     return std::nullopt;
   }
   ObjectReader elements(nullptr, child_pointer(key), *errors_);
@@ -170,7 +192,7 @@ bool ObjectReader::boolean_or(std::string_view key, bool fallback) {
     return fallback;
   }
   if (!value->is_boolean()) {
-    add_error(key, "must be true or false");
+    add_error(key, ErrorCode::not_a_boolean);
     return fallback;
   }
   return value->get<bool>();
@@ -178,10 +200,10 @@ bool ObjectReader::boolean_or(std::string_view key, bool fallback) {
 
 namespace {
 
-std::string list_of(std::initializer_list<std::string_view> allowed) {
-  std::string choices;
+nlohmann::json list_of(std::initializer_list<std::string_view> allowed) {
+  nlohmann::json choices = nlohmann::json::array();
   for (const std::string_view choice : allowed) {
-    choices += (choices.empty() ? "" : ", ") + std::string(choice);
+    choices.push_back(choice);
   }
   return choices;
 }
@@ -202,7 +224,7 @@ std::optional<std::string> ObjectReader::optional_choice(
       }
     }
   }
-  add_error(key, "must be one of: " + list_of(allowed));
+  add_error(key, ErrorCode::not_one_of, {{"allowed", list_of(allowed)}});
   return std::nullopt;
 }
 
@@ -212,7 +234,7 @@ std::optional<std::string> ObjectReader::optional_string(std::string_view key) {
     return std::nullopt;
   }
   if (!value->is_string()) {
-    add_error(key, "must be a string");
+    add_error(key, ErrorCode::not_a_string);
     return std::nullopt;
   }
   return value->get<std::string>();
@@ -222,7 +244,7 @@ std::optional<std::string> ObjectReader::required_choice(
     std::string_view key, std::initializer_list<std::string_view> allowed) {
   if (present() && !has(key)) {
     asked_.emplace(key);
-    add_error(key, "is required (one of: " + list_of(allowed) + ")");
+    add_error(key, ErrorCode::required_choice, {{"allowed", list_of(allowed)}});
     return std::nullopt;
   }
   return optional_choice(key, allowed);
@@ -232,10 +254,10 @@ ObjectReader ObjectReader::object(std::string_view key, bool required) {
   const nlohmann::json* value = find(key);
   if (value == nullptr) {
     if (required && present()) {
-      add_error(key, "is required");
+      add_error(key, ErrorCode::required);
     }
   } else if (!value->is_object()) {
-    add_error(key, "must be an object");
+    add_error(key, ErrorCode::not_an_object);
   }
   return ObjectReader(value, child_pointer(key), *errors_);
 }
@@ -246,14 +268,14 @@ void ObjectReader::reject_unknown_fields() {
   }
   for (const auto& [key, value] : object_->items()) {
     if (asked_.find(key) == asked_.end()) {
-      add_error(key, "is not a known field");
+      add_error(key, ErrorCode::unknown_field);
     }
   }
 }
 
 ObjectReader root_reader(const nlohmann::json& body, std::vector<FieldError>& errors) {
   if (!body.is_object()) {
-    errors.push_back({"", "the request body must be a JSON object"});
+    errors.push_back({"", ErrorCode::body_not_an_object, {}});
   }
   return ObjectReader(&body, "", errors);
 }

@@ -25,6 +25,9 @@ inline constexpr double kMaxLengthMm = 1.0e6;
 // resolution, and tiny positive products would underflow to 0 and divide.
 inline constexpr double kSmallestPositive = 1.0e-6;
 
+// The most teeth a cutter may have: far beyond any real cutter, small enough for every product.
+inline constexpr std::int64_t kMaxTeeth = 1000;
+
 struct Bounds {
   std::optional<double> min;
   bool min_inclusive = true;
@@ -91,8 +94,10 @@ class ObjectReader {
   void reject_unknown_fields();
 
   // Reports a present field that must not be there in this request, with the reason.
-  void reject(std::string_view key, std::string detail);
-  void add_error(std::string_view key, std::string detail);
+  void reject(std::string_view key, ErrorCode code,
+              nlohmann::json params = nlohmann::json::object());
+  void add_error(std::string_view key, ErrorCode code,
+                 nlohmann::json params = nlohmann::json::object());
 
  private:
   const nlohmann::json* find(std::string_view key);

@@ -11,7 +11,7 @@ namespace {
 
 // Thrown from the parser callback to stop parsing early; never escapes this file.
 struct Rejected {
-  std::string why;
+  Message why;
 };
 
 std::string lower_trimmed(std::string_view text) {
@@ -79,8 +79,7 @@ constexpr int kNumberOverflowId = 406;  // nlohmann::json out_of_range: a number
 
 std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
   if (body.empty()) {
-    return Problem{
-        ProblemKind::malformed_json, "the request body is empty; send a JSON object", {}};
+    return Problem{ProblemKind::malformed_json, Message{ErrorCode::empty_body}, {}};
   }
   // Keys seen so far in each open object, innermost last: duplicate keys are ambiguous input.
   std::vector<std::set<std::string>> open_objects;
@@ -90,7 +89,7 @@ std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
                                  nlohmann::json& parsed) {
         using Event = nlohmann::json::parse_event_t;
         if (depth > kMaxJsonDepth) {
-          throw Rejected{"JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels"};
+          throw Rejected{Message{ErrorCode::too_deeply_nested, {{"levels", kMaxJsonDepth}}}};
         }
         switch (event) {
           case Event::object_start:
@@ -110,7 +109,7 @@ std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
           case Event::key: {
             const auto& key = parsed.get_ref<const std::string&>();
             if (!open_objects.back().insert(key).second) {
-              throw Rejected{"duplicate key \"" + key + "\" in an object"};
+              throw Rejected{Message{ErrorCode::duplicate_key, {{"key", key}}}};
             }
             position.key(key);
             break;
@@ -127,17 +126,19 @@ std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
     return Problem{ProblemKind::malformed_json, rejected.why, {}};
   } catch (const nlohmann::json::out_of_range& error) {
     if (error.id == kNumberOverflowId) {
-      return invalid_input(
-          {FieldError{position.pointer(), "must be a finite number (too large for a double)"}});
+      return invalid_input({FieldError{position.pointer(), ErrorCode::not_finite, {}}});
     }
-    return Problem{ProblemKind::malformed_json, "the request body is not valid JSON", {}};
+    return Problem{ProblemKind::malformed_json,
+                   Message{ErrorCode::invalid_json, {{"reason", "out of range"}}},
+                   {}};
   } catch (const nlohmann::json::exception& error) {
     // The library's message says where parsing stopped; drop its "[json.exception...]" prefix.
     std::string why = error.what();
     if (const auto at = why.find("] "); at != std::string::npos) {
       why = why.substr(at + 2);
     }
-    return Problem{ProblemKind::malformed_json, "the request body is not valid JSON: " + why, {}};
+    return Problem{
+        ProblemKind::malformed_json, Message{ErrorCode::invalid_json, {{"reason", why}}}, {}};
   }
 }
 

@@ -28,19 +28,18 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
   const std::string instance(request.path);
   const std::string request_id(request.request_id);
   if (!is_json_media_type(request.content_type)) {
-    return problem_response(Problem{ProblemKind::unsupported_media_type,
-                                    "send the request body as application/json (got \"" +
-                                        std::string(request.content_type.substr(0, 100)) + "\")",
-                                    {}},
-                            instance, request_id);
+    const Message detail{ErrorCode::unsupported_media_type,
+                         {{"content_type", std::string(request.content_type.substr(0, 100))}}};
+    return problem_response(Problem{ProblemKind::unsupported_media_type, detail, {}}, instance,
+                            request_id, request.language);
   }
   auto parsed = parse_json_body(request.body);
   if (auto* problem = std::get_if<Problem>(&parsed)) {
-    return problem_response(*problem, instance, request_id);
+    return problem_response(*problem, instance, request_id, request.language);
   }
   HandlerOutcome outcome = handler(std::get<nlohmann::json>(parsed));
   if (auto* problem = std::get_if<Problem>(&outcome)) {
-    return problem_response(*problem, instance, request_id);
+    return problem_response(*problem, instance, request_id, request.language);
   }
   if (auto* document = std::get_if<JsonWithText>(&outcome)) {
     if (prefers_plain_text(request.accept)) {
@@ -58,9 +57,8 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
     spdlog::error("non-finite number in the response of {} (request {}): {}", instance, request_id,
                   std::string(request.body.substr(0, 4096)));
     return problem_response(
-        Problem{
-            ProblemKind::internal_error, "the calculation failed; this is a bug in cutcalc", {}},
-        instance, request_id);
+        Problem{ProblemKind::internal_error, Message{ErrorCode::internal_error}, {}}, instance,
+        request_id, request.language);
   }
   return ApiResponse{200, "application/json", body.dump(), {}};
 }

@@ -17,7 +17,8 @@ struct ApiRequest {
   std::string_view content_type;
   std::string_view body;
   std::string_view request_id;
-  std::string_view accept;  // the Accept header; only answers with a text form look at it
+  std::string_view accept;           // the Accept header; only answers with a text form look at it
+  Language language = Language::en;  // of problem details, from Accept-Language
 };
 
 // An answer that also has a plain-text form (a G-code program), chosen by the Accept header.

@@ -1,16 +1,28 @@
 #pragma once
-// RFC 9457 problem details: the one error body of the whole API (API.md, "Common rules").
+// RFC 9457 problem details: the one error body of the whole API (API.md, "Common rules"). Every
+// sentence comes from the catalogue (api/error_catalogue.h) in the language the client asked for.
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "api/api_response.h"
+#include "api/error_catalogue.h"
 
 namespace cutcalc::api {
 
+// A code and its parameters: what the response carries, and what its sentence is made of.
+struct Message {
+  ErrorCode code = ErrorCode::internal_error;
+  nlohmann::json params = nlohmann::json::object();  // e.g. {"minimum": 3, "maximum": 12}
+};
+
 struct FieldError {
   std::string pointer;  // RFC 6901 JSON Pointer into the request; "" = the combination of inputs
-  std::string detail;   // why, e.g. "must be > 0"
+  ErrorCode code = ErrorCode::required;
+  nlohmann::json params = nlohmann::json::object();  // sent beside code, e.g. "maximum": 12
 };
 
 enum class ProblemKind {
@@ -28,23 +40,24 @@ enum class ProblemKind {
 
 struct Problem {
   ProblemKind kind = ProblemKind::internal_error;
-  std::string detail;
+  std::optional<Message> detail;  // absent: said by the first field error
   std::vector<FieldError> errors;
 };
 
 int http_status(ProblemKind kind);
 
-// A problem for field errors; its detail names the first field, e.g. "cutter_diameter_mm must be >
+// A 422 for field errors; its detail names the first field, e.g. "cutter_diameter_mm must be >
 // 0".
 Problem invalid_input(std::vector<FieldError> errors);
 
-// The response body; instance is the request path, request_id the request's id (may be empty).
+// The response body in `language`; instance is the request path, request_id the request's id (may
+// be empty).
 std::string problem_json(const Problem& problem, const std::string& instance,
-                         const std::string& request_id);
+                         const std::string& request_id, Language language = Language::en);
 
-// problem_json wrapped as a response with the right status and media type.
+// problem_json wrapped as a response with the right status, media type and Content-Language.
 ApiResponse problem_response(const Problem& problem, const std::string& instance = {},
-                             const std::string& request_id = {});
+                             const std::string& request_id = {}, Language language = Language::en);
 
 inline constexpr const char* kProblemMediaType = "application/problem+json";
 

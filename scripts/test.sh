@@ -3,7 +3,7 @@
 # with AddressSanitizer + UndefinedBehaviorSanitizer; then the service's tests (HTTP engine,
 # framing, abuse, shutdown) a third time under ThreadSanitizer (the tsan preset). Any warning fails the build (-Werror); any
 # test failure or sanitizer report fails the run. Then the fuzzers, the OpenAPI contract replay, the
-# container and the Kubernetes manifests (each script says what it proves).
+# generated clients (codegen), the container and the Kubernetes manifests (each script says what it proves).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -19,6 +19,8 @@ echo "=== fuzz: every libFuzzer harness (ASan + UBSan) for a bounded time, seede
 scripts/ci-fuzz.sh
 echo "=== contract: lint openapi.yaml, replay every reference and bad-input case through Prism"
 scripts/ci-contract.sh
+echo "=== codegen: openapi-typescript + openapi-fetch and @hey-api/openapi-ts clients, tsc --strict, every reference case against cutcalc"
+scripts/ci-codegen.sh
 echo "=== container: build the Dockerfile with podman, run it and replay the reference cases"
 scripts/ci-container.sh
 echo "=== Kubernetes manifests: render offline and validate"

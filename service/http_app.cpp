@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 #include <nlohmann/json.hpp>
 
+#include "api/accept_header.h"
 #include "api/json_endpoint.h"
 #include "api/problem.h"
 #include "api/routes.h"
@@ -66,21 +67,32 @@ std::string problem_instance(std::string_view target) {
   return instance;
 }
 
+api::Language language_of(const httplib::Request& req) {
+  return api::preferred_language(req.get_header_value("Accept-Language"));
+}
+
 void write_problem(const httplib::Request& req, httplib::Response& res,
                    const api::Problem& problem) {
   write(res, api::problem_response(problem, problem_instance(req.path),
-                                   res.get_header_value(kRequestIdHeader)));
+                                   res.get_header_value(kRequestIdHeader), language_of(req)));
+}
+
+api::Problem problem(api::ProblemKind kind, api::ErrorCode code,
+                     nlohmann::json params = nlohmann::json::object()) {
+  return {kind, api::Message{code, std::move(params)}, {}};
 }
 
 // Problems for statuses the HTTP library sets by itself, before any handler runs.
-api::Problem library_problem(int status) {
+api::Problem library_problem(const httplib::Request& req, int status) {
   switch (status) {
     case 404:
-      return {api::ProblemKind::not_found, "no such resource", {}};
+      return problem(api::ProblemKind::not_found, api::ErrorCode::no_such_resource,
+                     {{"path", problem_instance(req.path)}});
     case 413:
-      return {api::ProblemKind::payload_too_large, "the request body exceeds the size limit", {}};
+      return problem(api::ProblemKind::payload_too_large, api::ErrorCode::body_too_large);
     default:
-      return {api::ProblemKind::bad_request, "the HTTP request could not be processed", {}};
+      return problem(api::ProblemKind::bad_request, api::ErrorCode::malformed_http,
+                     {{"reason", "status " + std::to_string(status)}});
   }
 }
 
@@ -125,20 +137,26 @@ void HttpApp::shutdown() {
 void HttpApp::serve_connection(int sock) { server_->adopt_connection(sock); }
 
 std::string HttpApp::engine_error_response(const EngineError& error) {
-  const api::ProblemKind kind = error.status == 413   ? api::ProblemKind::payload_too_large
-                                : error.status == 503 ? api::ProblemKind::unavailable
-                                                      : api::ProblemKind::bad_request;
+  // The head could not be trusted, so its Accept-Language is not read: these answer in English.
+  const api::Problem said =
+      error.status == 413
+          ? problem(api::ProblemKind::payload_too_large, api::ErrorCode::body_too_large)
+      : error.status == 503
+          ? problem(api::ProblemKind::unavailable, api::ErrorCode::connection_limit)
+          : problem(api::ProblemKind::bad_request, api::ErrorCode::malformed_http,
+                    {{"reason", std::string(error.detail)}});
   const std::string request_id = generate_request_id();
   const std::string instance = problem_instance(error.target);
-  const api::ApiResponse problem =
-      api::problem_response({kind, std::string(error.detail), {}}, instance, request_id);
+  const api::ApiResponse problem = api::problem_response(said, instance, request_id);
   metrics_.observe("unmatched", error.method, problem.status, 0.0);
   if (access_log_enabled()) {
     log_access(
         {error.method.empty() ? "-" : error.method, instance, problem.status, 0.0, request_id, {}});
   }
-  return closing_response(problem.status, problem.content_type, problem.body,
-                          {{kRequestIdHeader, request_id}, {kNoSniffHeader, "nosniff"}});
+  httplib::Headers headers(problem.headers.begin(), problem.headers.end());
+  headers.emplace(kRequestIdHeader, request_id);
+  headers.emplace(kNoSniffHeader, "nosniff");
+  return closing_response(problem.status, problem.content_type, problem.body, headers);
 }
 
 void HttpApp::install_middleware() {
@@ -159,7 +177,9 @@ void HttpApp::install_middleware() {
     cors_.decorate(req, res);
     const RouteEntry* route = routes_.find(req.path);
     if (route == nullptr) {
-      write_problem(req, res, {api::ProblemKind::not_found, "no such resource: " + req.path, {}});
+      write_problem(req, res,
+                    problem(api::ProblemKind::not_found, api::ErrorCode::no_such_resource,
+                            {{"path", problem_instance(req.path)}}));
       return httplib::Server::HandlerResponse::Handled;
     }
     t_request.route = route->path.c_str();
@@ -170,9 +190,8 @@ void HttpApp::install_middleware() {
     if (!RouteTable::allows(*route, req.method)) {
       write_problem(
           req, res,
-          {api::ProblemKind::method_not_allowed,
-           req.method + " is not allowed on " + route->path + "; allowed: " + route->allow,
-           {}});
+          problem(api::ProblemKind::method_not_allowed, api::ErrorCode::method_not_allowed,
+                  {{"method", req.method}, {"path", route->path}, {"allow", route->allow}}));
       res.set_header("Allow", route->allow);
       return httplib::Server::HandlerResponse::Handled;
     }
@@ -192,7 +211,7 @@ void HttpApp::install_middleware() {
         if (!res.has_header(kRequestIdHeader)) {
           res.set_header(kRequestIdHeader, generate_request_id());
         }
-        write_problem(req, res, library_problem(res.status));
+        write_problem(req, res, library_problem(req, res.status));
         return httplib::Server::HandlerResponse::Handled;
       }));
 
@@ -207,9 +226,8 @@ void HttpApp::install_middleware() {
         }
         spdlog::error("unhandled exception on {} {} (request {}): {}", req.method, req.path,
                       res.get_header_value(kRequestIdHeader), what);
-        write_problem(
-            req, res,
-            {api::ProblemKind::internal_error, "an internal error occurred; it was logged", {}});
+        write_problem(req, res,
+                      problem(api::ProblemKind::internal_error, api::ErrorCode::internal_error));
       });
 
   server_->set_logger([this](const httplib::Request& req, const httplib::Response& res) {
@@ -238,8 +256,9 @@ void HttpApp::install_routes() {
           const std::string content_type = req.get_header_value("Content-Type");
           const std::string& request_id = t_request.request_id;
           const std::string accept = req.get_header_value("Accept");
-          write(res, api::run_json_endpoint({req.path, content_type, req.body, request_id, accept},
-                                            handler));
+          write(res, api::run_json_endpoint(
+                         {req.path, content_type, req.body, request_id, accept, language_of(req)},
+                         handler));
         });
   }
 
@@ -251,7 +270,8 @@ void HttpApp::install_routes() {
   routes_.add("/readyz", RouteMethod::get);
   server_->Get("/readyz", [this](const httplib::Request& req, httplib::Response& res) {
     if (draining_.load()) {
-      write_problem(req, res, {api::ProblemKind::unavailable, "shutting down", {}});
+      write_problem(req, res,
+                    problem(api::ProblemKind::unavailable, api::ErrorCode::shutting_down));
       return;
     }
     reply_json(res, {{"status", "ready"}});

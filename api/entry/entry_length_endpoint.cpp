@@ -21,8 +21,8 @@ EntryLengthRequest read_request(ObjectReader& in) {
   domain::entry::EntryLengthParams& params = request.params;
   params.cutter_diameter_mm =
       in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
-  params.offset_mm = in.number_or("offset_mm", Bounds::magnitude(), 0.0);
-  params.approach_mm = in.number_or("approach_mm", Bounds::non_negative(), 2.0);
+  params.offset_mm = in.number_or("offset_mm", Bounds::magnitude(), params.offset_mm);
+  params.approach_mm = in.number_or("approach_mm", Bounds::non_negative(), params.approach_mm);
   ObjectReader entry = in.object("entry", true);
   params.entry = read_contour(entry, ContourSide::entry).value_or(domain::entry::Contour{});
 
@@ -32,14 +32,14 @@ EntryLengthRequest read_request(ObjectReader& in) {
     domain::entry::ExitSide side;
     side.contour = exit_contour.value_or(domain::entry::Contour{});
     side.length_mm = in.required_number("length_mm", Bounds::positive()).value_or(0.0);
-    side.extra_path_mm = in.number_or("extra_path_mm", Bounds::non_negative(), 0.0);
-    side.overrun_mm = in.number_or("overrun_mm", Bounds::non_negative(), 2.0);
+    side.extra_path_mm = in.number_or("extra_path_mm", Bounds::non_negative(), side.extra_path_mm);
+    side.overrun_mm = in.number_or("overrun_mm", Bounds::non_negative(), side.overrun_mm);
     params.exit = side;
   } else {
     // Path lengths only mean something with an exit: a lone one is a mistake, not a default.
     for (const char* key : {"length_mm", "extra_path_mm", "overrun_mm"}) {
       if (in.has(key)) {
-        in.reject(key, "is only used together with exit");
+        in.reject(key, ErrorCode::requires_field, {{"field", "exit"}});
       }
     }
   }

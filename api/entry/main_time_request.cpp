@@ -9,8 +9,6 @@ namespace {
 
 using domain::entry::MainTimeParams;
 
-constexpr std::int64_t kMaxTeeth = 1000;
-
 domain::entry::Allowance read_allowance(ObjectReader& in) {
   ObjectReader allowance = in.object("allowance", true);
   domain::entry::Allowance out;
@@ -45,13 +43,16 @@ MainTimeParams read_params(ObjectReader& in) {
   if (entry_feed_per_tooth) {
     params.entry_feed = domain::entry::EntryFeedPerTooth{*entry_feed_per_tooth};
   } else {
-    params.entry_feed = domain::entry::EntryFeedFactor{factor.value_or(0.5)};
+    domain::entry::EntryFeedFactor entry_feed;
+    entry_feed.factor = factor.value_or(entry_feed.factor);
+    params.entry_feed = entry_feed;
   }
 
   params.length_mm = in.required_number("length_mm", Bounds::positive()).value_or(0.0);
-  params.extra_path_mm = in.number_or("extra_path_mm", Bounds::non_negative(), 0.0);
-  params.approach_mm = in.number_or("approach_mm", Bounds::non_negative(), 2.0);
-  params.overrun_mm = in.number_or("overrun_mm", Bounds::non_negative(), 2.0);
+  params.extra_path_mm =
+      in.number_or("extra_path_mm", Bounds::non_negative(), params.extra_path_mm);
+  params.approach_mm = in.number_or("approach_mm", Bounds::non_negative(), params.approach_mm);
+  params.overrun_mm = in.number_or("overrun_mm", Bounds::non_negative(), params.overrun_mm);
   ObjectReader entry = in.object("entry", true);
   params.entry = read_contour(entry, ContourSide::entry).value_or(domain::entry::Contour{});
   ObjectReader exit = in.object("exit", true);
@@ -64,10 +65,14 @@ MainTimeParams read_params(ObjectReader& in) {
 std::vector<FieldError> alternative_errors(const ObjectReader& in) {
   std::vector<FieldError> errors;
   if (in.has("spindle_speed_rpm") == in.has("cutting_speed_m_per_min")) {
-    errors.push_back({"", "give exactly one of spindle_speed_rpm and cutting_speed_m_per_min"});
+    errors.push_back({"",
+                      ErrorCode::exactly_one_field,
+                      {{"fields", {"spindle_speed_rpm", "cutting_speed_m_per_min"}}}});
   }
   if (in.has("entry_feed_factor") && in.has("entry_feed_per_tooth_mm")) {
-    errors.push_back({"", "give at most one of entry_feed_factor and entry_feed_per_tooth_mm"});
+    errors.push_back({"",
+                      ErrorCode::exclusive_fields,
+                      {{"fields", {"entry_feed_factor", "entry_feed_per_tooth_mm"}}}});
   }
   return errors;
 }

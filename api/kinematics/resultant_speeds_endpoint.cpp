@@ -69,10 +69,12 @@ HandlerOutcome handle_resultant_speeds(const nlohmann::json& body) {
   ObjectReader in = root_reader(body, errors);
   const auto params = read_params(in);
   if (errors.empty() && in.has("center_distance_mm") == in.has("flat_depth_mm")) {
-    errors.push_back({"", "give exactly one of center_distance_mm and flat_depth_mm"});
+    errors.push_back(
+        {"", ErrorCode::exactly_one_field, {{"fields", {"center_distance_mm", "flat_depth_mm"}}}});
   }
   if (errors.empty() && in.has("contact_angles_deg") && in.has("arc_samples")) {
-    errors.push_back({"", "give at most one of contact_angles_deg and arc_samples"});
+    errors.push_back(
+        {"", ErrorCode::exclusive_fields, {{"fields", {"contact_angles_deg", "arc_samples"}}}});
   }
   if (!errors.empty()) {
     return invalid_input(std::move(errors));

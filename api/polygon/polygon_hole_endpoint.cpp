@@ -35,7 +35,7 @@ model::PolygonHoleParams read_params(ObjectReader& in) {
   params.step_down_mm = in.required_number("step_down_mm", Bounds::positive()).value_or(1.0);
   params.spindle_speed_rpm =
       in.required_number("spindle_speed_rpm", Bounds::positive()).value_or(1.0);
-  params.tolerance_mm = in.number_or("tolerance_mm", kTolerance, 0.001);
+  params.tolerance_mm = in.number_or("tolerance_mm", kTolerance, params.tolerance_mm);
   const auto mode = in.optional_choice("synchronization", {"feed_per_rev", "c_axis"});
   params.synchronization =
       mode == "c_axis" ? model::Synchronization::c_axis : model::Synchronization::feed_per_rev;
@@ -43,8 +43,8 @@ model::PolygonHoleParams read_params(ObjectReader& in) {
     params.loops_per_layer =
         static_cast<int>(in.required_integer("loops_per_layer", 1, kMaxLoopsPerLayer).value_or(1));
   }
-  params.safe_z_mm = in.number_or("safe_z_mm", Bounds::positive(), 5.0);
-  params.block_time_ms = in.number_or("block_time_ms", Bounds::positive(), 2.0);
+  params.safe_z_mm = in.number_or("safe_z_mm", Bounds::positive(), params.safe_z_mm);
+  params.block_time_ms = in.number_or("block_time_ms", Bounds::positive(), params.block_time_ms);
   return params;
 }
 
@@ -59,7 +59,8 @@ PolygonHoleRequest read_request(const nlohmann::json& body, ObjectReader& in,
     if (given.is_object() && given.contains("safe_z_mm")) {
       if (in.has("safe_z_mm")) {
         errors.push_back({"/program/safe_z_mm",
-                          "give safe_z_mm either at the top level or in program, not both"});
+                          ErrorCode::exclusive_fields,
+                          {{"fields", {"safe_z_mm", "program.safe_z_mm"}}}});
       }
       request.params.safe_z_mm = request.params.program->safe_z_mm;
     }

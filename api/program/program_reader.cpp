@@ -2,13 +2,40 @@
 
 #include <string>
 
+#include "domain/polygon/polygon_hole.h"
+
 namespace cutcalc::api::program {
 namespace {
 
 namespace model = domain::program;
 
-constexpr double kPassProgramSafeZMm = 10.0;
-constexpr double kPolygonSafeZMm = 5.0;  // the polygon's safe_z_mm default (polygon-holes.md)
+void add_name_error(ObjectReader& in, const model::NameProblem& problem) {
+  switch (problem.rule) {
+    case model::NameRule::shape:
+      in.add_error("name", ErrorCode::invalid_program_name);
+      return;
+    case model::NameRule::reserved_device:
+      in.add_error("name", ErrorCode::reserved_program_name, {{"name", problem.subject}});
+      return;
+    case model::NameRule::sinumerik_two_letters:
+      in.add_error("name", ErrorCode::program_name_two_letters);
+      return;
+    case model::NameRule::sinumerik_reserved_prefix:
+      in.add_error("name", ErrorCode::program_name_reserved_prefix, {{"prefix", problem.subject}});
+      return;
+  }
+}
+
+// "G54", ... up to G<last>.
+nlohmann::json work_offsets(int last) {
+  nlohmann::json offsets = nlohmann::json::array();
+  for (int number = 54; number <= last; ++number) {
+    std::string offset = "G";  // appended: GCC 12's -Wrestrict misfires on "G" + std::string
+    offset += std::to_string(number);
+    offsets.push_back(std::move(offset));
+  }
+  return offsets;
+}
 
 model::Dialect read_dialect(ObjectReader& in) {
   const auto dialect = in.optional_choice("dialect", {"linuxcnc", "fanuc", "sinumerik"});
@@ -24,7 +51,7 @@ void read_identity(ObjectReader& in, model::ProgramOptions& options) {
   }
   if (in.has("program_number")) {
     if (options.dialect != model::Dialect::fanuc) {
-      in.reject("program_number", "is for dialect fanuc only");
+      in.reject("program_number", ErrorCode::dialect_only, {{"dialect", "fanuc"}});
     } else {
       options.program_number = static_cast<int>(
           in.required_integer("program_number", 1, model::kMaxProgramNumber).value_or(1));
@@ -32,7 +59,7 @@ void read_identity(ObjectReader& in, model::ProgramOptions& options) {
   }
   if (const auto name = in.optional_string("name")) {
     if (const auto problem = model::name_problem(*name, options.dialect)) {
-      in.add_error("name", *problem);
+      add_name_error(in, *problem);
     } else {
       options.name = *name;
     }
@@ -46,15 +73,15 @@ void read_tool_and_machine_state(ObjectReader& in, model::ProgramOptions& option
   }
   options.tool_length_offset = in.boolean_or("tool_length_offset", false);
   if (options.tool_length_offset && !in.has("tool_number")) {
-    in.add_error("tool_length_offset", "needs tool_number");
+    in.add_error("tool_length_offset", ErrorCode::requires_field, {{"field", "tool_number"}});
   }
   if (const auto offset =
           in.optional_choice("work_offset", {"G54", "G55", "G56", "G57", "G58", "G59"})) {
     options.work_offset = std::stoi(offset->substr(1));
     if (options.work_offset > model::max_work_offset(options.dialect)) {
-      in.add_error(
-          "work_offset",
-          "sinumerik's work offsets are G54 to G57 (G58 and G59 are programmable offsets)");
+      in.add_error("work_offset", ErrorCode::work_offset_unavailable,
+                   {{"dialect", model::dialect_name(options.dialect)},
+                    {"allowed", work_offsets(model::max_work_offset(options.dialect))}});
     }
   }
   const auto coolant = in.optional_choice("coolant", {"off", "flood", "mist"});
@@ -66,19 +93,21 @@ void read_tool_and_machine_state(ObjectReader& in, model::ProgramOptions& option
 void read_motion(ObjectReader& in, ProgramKind kind, model::ProgramOptions& options) {
   options.safe_z_mm =
       in.number_or("safe_z_mm", Bounds::positive(),
-                   kind == ProgramKind::polygon ? kPolygonSafeZMm : kPassProgramSafeZMm);
+                   kind == ProgramKind::polygon ? domain::polygon::PolygonHoleParams{}.safe_z_mm
+                                                : options.safe_z_mm);
   if (kind == ProgramKind::polygon) {
     for (const char* key : {"clearance_mm", "plunge_feed_mm_per_min", "rapid_mm_per_min"}) {
-      if (in.has(key)) in.reject(key, "is for the pass program (POST /v1/main-time/program) only");
+      if (in.has(key)) in.reject(key, ErrorCode::pass_program_only);
     }
     return;
   }
-  options.clearance_mm = in.number_or("clearance_mm", Bounds::non_negative(), 2.0);
+  options.clearance_mm = in.number_or("clearance_mm", Bounds::non_negative(), options.clearance_mm);
   if (options.clearance_mm > options.safe_z_mm) {
-    in.add_error("clearance_mm", "must not be above safe_z_mm");
+    in.add_error("clearance_mm", ErrorCode::not_above, {{"field", "safe_z_mm"}});
   }
   options.plunge_feed_mm_per_min = in.optional_number("plunge_feed_mm_per_min", Bounds::positive());
-  options.rapid_mm_per_min = in.number_or("rapid_mm_per_min", Bounds::positive(), 10000.0);
+  options.rapid_mm_per_min =
+      in.number_or("rapid_mm_per_min", Bounds::positive(), options.rapid_mm_per_min);
 }
 
 }  // namespace

@@ -6,11 +6,7 @@
 #include "domain/roughness/bore_milling.h"
 
 namespace cutcalc::api::roughness {
-namespace {
-
-constexpr std::int64_t kMaxTeeth = 1000;
-
-}  // namespace
+namespace {}  // namespace
 
 HandlerOutcome handle_bore_milling(const nlohmann::json& body) {
   std::vector<FieldError> errors;

@@ -26,12 +26,13 @@ std::optional<DomainError> check_allowance_width(const MainTimeParams& params,
 }
 
 // E27: the passes are laid from the side edge Y_p = 0, so there is no free offset, and they can
-// only end at the far edge if the allowance spans the whole part.
+// only end at the far edge if the allowance spans the whole part. An offset of 0 is the default
+// (no offset), so it is accepted as if it were absent.
 std::optional<DomainError> check_several_passes(const MainTimeParams& params,
                                                 double part_width_mm) {
-  if (params.offset_mm) {
+  if (params.offset_mm.value_or(0.0) != 0.0) {
     return make_error(ErrorCode::offset_with_several_passes,
-                      "offset_mm applies only to a single lateral pass");
+                      "a non-zero offset_mm applies only to a single lateral pass");
   }
   if (!same_width(params.allowance.width_mm, part_width_mm)) {
     return make_error(ErrorCode::allowance_not_full_width,

@@ -12,6 +12,10 @@
 
 namespace cutcalc::domain::entry {
 
+// A service guard, not part of the model: each pass becomes an element of the response, so an
+// allowance divided into millions of cuts is refused (too_many_*_passes) instead of filling memory.
+inline constexpr std::size_t kMaxPassCount = 10000;
+
 struct SpindleSpeed {
   double rpm = 0.0;  // n
 };

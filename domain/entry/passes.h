@@ -5,12 +5,9 @@
 #include <vector>
 
 #include "domain/common/result.h"
+#include "domain/entry/main_time.h"
 
 namespace cutcalc::domain::entry::detail {
-
-// A service guard, not part of the model: each pass becomes an element of the response, so an
-// allowance divided into millions of cuts is refused instead of filling memory.
-inline constexpr std::size_t kMaxPassCount = 10000;
 
 // E24: N = ceil(allowance / cut - 1e-9), at least 1. Error `too_many` above kMaxPassCount.
 Result<std::size_t> pass_count(double allowance_mm, double cut_mm, ErrorCode too_many,

@@ -21,9 +21,7 @@ namespace cutcalc::domain::polygon {
 
 namespace {
 
-constexpr int kMaxBiarcsPerEllipseArc = 1000;      // P21
-constexpr double kMaxProgramArcBlocks = 200000.0;  // section 10
-constexpr double kMergeTolerance = 1e-9;           // P21, times d (= 1 here)
+constexpr double kMergeTolerance = 1e-9;  // P21, times d (= 1 here)
 
 // A comment must not hold parentheses, commas, % or non-ASCII characters (section 5).
 std::string comment_safe(const std::string& text) {

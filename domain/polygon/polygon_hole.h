@@ -13,6 +13,9 @@
 
 namespace cutcalc::domain::polygon {
 
+inline constexpr int kMaxBiarcsPerEllipseArc = 1000;      // P21: else tolerance_unreachable
+inline constexpr double kMaxProgramArcBlocks = 200000.0;  // section 10: else program_too_large
+
 enum class Synchronization {
   feed_per_rev,  // G95, F = feed per spindle revolution (the paper's way); phase not locked
   c_axis,        // spindle as rotary axis C: the exact rotor phase in C words on every arc

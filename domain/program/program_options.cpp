@@ -27,24 +27,26 @@ int decimals_of(const ProgramOptions& options) {
   return options.decimals.value_or(default_decimals(options.dialect, options.units));
 }
 
-std::optional<std::string> name_problem(std::string_view name, Dialect dialect) {
+std::optional<NameProblem> name_problem(std::string_view name, Dialect dialect) {
   const bool shaped = !name.empty() && name.size() <= 24 && is_upper(name.front()) &&
                       std::all_of(name.begin(), name.end(),
                                   [](char c) { return is_upper(c) || is_digit(c) || c == '_'; });
-  if (!shaped) return "must be 1 to 24 of A-Z, 0-9 and _, starting with a letter";
+  if (!shaped) return NameProblem{NameRule::shape, {}};
   // Device names of the file systems the program may be copied through.
   for (const std::string_view reserved : {"CON", "PRN", "AUX", "NUL"}) {
-    if (name == reserved) return "must not be a reserved device name (" + std::string(name) + ")";
+    if (name == reserved) return NameProblem{NameRule::reserved_device, std::string(name)};
   }
   if (name.size() == 4 && (name.substr(0, 3) == "COM" || name.substr(0, 3) == "LPT") &&
       name[3] >= '1' && name[3] <= '9') {
-    return "must not be a reserved device name (" + std::string(name) + ")";
+    return NameProblem{NameRule::reserved_device, std::string(name)};
   }
   if (dialect == Dialect::sinumerik) {
-    if (name.size() < 2 || !is_upper(name[1])) return "must start with two letters (sinumerik)";
+    if (name.size() < 2 || !is_upper(name[1])) {
+      return NameProblem{NameRule::sinumerik_two_letters, {}};
+    }
     for (const std::string_view prefix : {"CYCLE", "CUST_", "GROUP_", "S_", "E_", "F_", "CC_"}) {
       if (name.substr(0, prefix.size()) == prefix) {
-        return "must not start with " + std::string(prefix) + " (reserved by sinumerik)";
+        return NameProblem{NameRule::sinumerik_reserved_prefix, std::string(prefix)};
       }
     }
   }

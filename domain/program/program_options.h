@@ -40,8 +40,20 @@ struct ProgramOptions {
 int default_decimals(Dialect dialect, Units units);
 int decimals_of(const ProgramOptions& options);
 
-// Why `name` is not a program name for `dialect` (section 2), or nullopt when it is.
-std::optional<std::string> name_problem(std::string_view name, Dialect dialect);
+// Why a string is not a program name (section 2).
+enum class NameRule {
+  shape,                      // 1..24 of A-Z, 0-9, _, starting with a letter
+  reserved_device,            // CON, PRN, AUX, NUL, COM1-9, LPT1-9
+  sinumerik_two_letters,      // sinumerik names start with two letters
+  sinumerik_reserved_prefix,  // CYCLE, CUST_, GROUP_, S_, E_, F_, CC_
+};
+struct NameProblem {
+  NameRule rule;
+  std::string subject;  // the reserved name or prefix, when the rule has one
+};
+
+// Why `name` is not a program name for `dialect`, or nullopt when it is.
+std::optional<NameProblem> name_problem(std::string_view name, Dialect dialect);
 // The highest work offset the dialect has as a work offset (sinumerik G57; G58/G59 are
 // programmable offsets there).
 int max_work_offset(Dialect dialect);

@@ -486,11 +486,12 @@ TEST(OpenApiDocument, CheckerRejectsUndocumentedPathsOperationsStatusesAndMediaT
           .empty());
 }
 
-TEST(OpenApiDocument, ProblemSchemasPinTypeTitleAndStatus) {
+TEST(OpenApiDocument, ProblemSchemasPinTypeStatusAndErrorCodes) {
   const std::string pj = "application/problem+json";
-  const json field_error =
-      json::array({{{"pointer", "/entry/width_mm"}, {"detail", "must be > 0"}}});
-  const json combination = json::array({{{"pointer", ""}, {"detail", "no contact"}}});
+  const json field_error = json::array(
+      {{{"pointer", "/entry/width_mm"}, {"code", "must_be_positive"}, {"detail", "must be > 0"}}});
+  const json combination =
+      json::array({{{"pointer", ""}, {"code", "no_contact"}, {"detail", "no contact"}}});
   EXPECT_TRUE(project_contract()
                   .check_response("POST", "/v1/main-time", 422, pj,
                                   problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
@@ -501,11 +502,21 @@ TEST(OpenApiDocument, ProblemSchemasPinTypeTitleAndStatus) {
                                   problem("urn:cutcalc:problem:impossible-input",
                                           "Input impossible for the model", 422, combination))
                   .empty());
-  // Title of the other 422 type, wrong type for the status, wrong status, no errors, bad pointer.
+  // An error without its code or with an unknown one, wrong type for the status, wrong status,
+  // no errors, bad pointer. (Titles are not pinned: they follow Accept-Language.)
+  json without_code = field_error;
+  without_code[0].erase("code");
   EXPECT_FALSE(project_contract()
                    .check_response("POST", "/v1/main-time", 422, pj,
-                                   problem("urn:cutcalc:problem:invalid-input",
-                                           "Input impossible for the model", 422, field_error))
+                                   problem("urn:cutcalc:problem:invalid-input", "Invalid input",
+                                           422, without_code))
+                   .empty());
+  json unknown_code = field_error;
+  unknown_code[0]["code"] = "must_be_nice";
+  EXPECT_FALSE(project_contract()
+                   .check_response("POST", "/v1/main-time", 422, pj,
+                                   problem("urn:cutcalc:problem:invalid-input", "Invalid input",
+                                           422, unknown_code))
                    .empty());
   EXPECT_FALSE(project_contract()
                    .check_response("POST", "/v1/main-time", 422, pj,
@@ -561,12 +572,14 @@ TEST(OpenApiDocument, RouteFallbacksCover404And405AndTheirHeaders) {
   EXPECT_TRUE(
       project_contract().check_response("GET", "/v1/entry-length", 405, pj, not_allowed).empty());
   EXPECT_TRUE(project_contract().check_response("POST", "/healthz", 405, pj, not_allowed).empty());
-  EXPECT_TRUE(project_contract()
-                  .check_response_headers("GET", "/v1/entry-length", 405,
-                                          {{"allow", "POST, OPTIONS"}, {"x-request-id", "a.b-c_1"}})
-                  .empty());
-  auto v = project_contract().check_response_headers("GET", "/v1/entry-length", 405,
-                                                     {{"X-Request-Id", "abc"}});
+  EXPECT_TRUE(
+      project_contract()
+          .check_response_headers(
+              "GET", "/v1/entry-length", 405,
+              {{"allow", "POST, OPTIONS"}, {"x-request-id", "a.b-c_1"}, {"content-language", "en"}})
+          .empty());
+  auto v = project_contract().check_response_headers(
+      "GET", "/v1/entry-length", 405, {{"X-Request-Id", "abc"}, {"Content-Language", "ru"}});
   EXPECT_EQ(v.size(), 1U) << join(v);  // Allow is missing
   v = project_contract().check_response_headers("POST", "/v1/entry-length", 200, {});
   EXPECT_EQ(v.size(), 1U) << join(v);  // X-Request-Id is missing
@@ -1141,7 +1154,11 @@ TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
 
   // Errors are problem+json whatever Accept asked for; both 422 kinds are documented.
   const std::string pj = "application/problem+json";
-  const json field_errors = json::array({{{"pointer", "/faces"}, {"detail", "must be <= 12"}}});
+  const json field_errors = json::array({{{"pointer", "/faces"},
+                                          {"code", "out_of_range"},
+                                          {"detail", "must be in [3, 12]"},
+                                          {"minimum", 3},
+                                          {"maximum", 12}}});
   EXPECT_TRUE(project_contract()
                   .check_response("POST", path, 422, pj,
                                   problem("urn:cutcalc:problem:invalid-input", "Invalid input", 422,
@@ -1153,13 +1170,16 @@ TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
               "POST", path, 422, pj,
               problem("urn:cutcalc:problem:impossible-input", "Input impossible for the model", 422,
                       json::array({{{"pointer", "/step_down_mm"},
+                                    {"code", "program_too_large"},
                                     {"detail", "more than 200000 arc blocks"}}})))
           .empty());
   EXPECT_FALSE(project_contract().check_response("POST", path, 422, text, "(ERROR)").empty());
-  EXPECT_TRUE(project_contract()
-                  .check_response_headers("GET", path, 405,
-                                          {{"Allow", "POST, OPTIONS"}, {"X-Request-Id", "a"}})
-                  .empty());
+  EXPECT_TRUE(
+      project_contract()
+          .check_response_headers(
+              "GET", path, 405,
+              {{"Allow", "POST, OPTIONS"}, {"X-Request-Id", "a"}, {"Content-Language", "en"}})
+          .empty());
   for (const int status : {400, 405, 413, 415, 500, 503}) {
     const json& response = deref(doc()["paths"][path]["post"]["responses"][std::to_string(status)]);
     EXPECT_TRUE(response["content"].contains(pj)) << status;

@@ -546,12 +546,25 @@ TEST(MainTimeTimes, TotalsAreDepthPassesTimesTheLateralSum) {
   expect_time_identities(v);
 }
 
+TEST(MainTimePasses, ZeroOffsetWithSeveralPassesIsTheSameAsNone) {
+  // 0 is offset_mm's documented default: sent explicitly it changes nothing.
+  MainTimeParams with_zero = worked_example();
+  with_zero.offset_mm = 0.0;
+  MainTimeParams without = worked_example();
+  without.offset_mm.reset();
+  const auto a = main_time_ok(with_zero);
+  const auto b = main_time_ok(without);
+  ASSERT_EQ(a.lateral_passes.size(), b.lateral_passes.size());
+  EXPECT_GT(a.lateral_passes.size(), 1u);
+  EXPECT_DOUBLE_EQ(a.main_time_min, b.main_time_min);
+}
+
 // ---- section 8: errors
 // ------------------------------------------------------------------------------
 
 TEST(MainTimeErrors, OffsetWithSeveralPasses) {
   MainTimeParams p = worked_example();
-  p.offset_mm = 0.0;
+  p.offset_mm = 1.0;
   expect_error(p, ErrorCode::offset_with_several_passes, "offset with N1 = 2");
 }
 
