@@ -182,25 +182,6 @@ export function showMessage(form, message) {
   formError(form, message);
 }
 
-// Runs `calculate` on submit (Enter in any field or the Calculate button) with the form's errors
-// cleared first and the form marked busy meanwhile.
-export function onCalculate(form, calculate) {
-  form.addEventListener('submit', async (event) => {
-    event.preventDefault();
-    if (form.getAttribute('aria-busy') === 'true') return;
-    clearErrors(form);
-    form.setAttribute('aria-busy', 'true');
-    try {
-      await calculate();
-    } catch (error) {
-      formError(form, `The page failed: ${error?.message ?? error}`);
-      console.error(error);
-    } finally {
-      form.removeAttribute('aria-busy');
-    }
-  });
-}
-
 // ------------------------------------------------------------------ results
 
 // A number for people: at most 4 decimals (trailing zeros dropped), 4 significant digits for

@@ -1,13 +1,12 @@
 // Groove-wall roughness (paper 003): Rz of the feed marks, the branch of the model and, with a
 // target, the largest feed; the plot Rz(feed) comes from the same request (curve_points).
 
-import { postWithOptIn } from './api.js';
+import { onCalculate } from './calculation.js';
 import {
   at,
   fmt,
   h,
   noDiagram,
-  onCalculate,
   readBody,
   showFailure,
   sym,
@@ -27,9 +26,9 @@ const BRANCHES = {
 export function init() {
   const form = document.getElementById('groove-form');
   const result = document.getElementById('groove-result');
-  onCalculate(form, async () => {
+  return onCalculate(form, async (api) => {
     const body = readBody(form);
-    const answer = await postWithOptIn(PATH, body, 'curve_points', CURVE_POINTS);
+    const answer = await api.postWithOptIn(PATH, body, 'curve_points', CURVE_POINTS);
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);
