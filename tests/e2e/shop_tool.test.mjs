@@ -1,13 +1,18 @@
-// End-to-end test of the calculator page as a shop tool (issue 13, parts 1 and 7): Playwright
+// End-to-end test of the calculator page as a shop tool (issue 13, parts 1, 3 and 7): Playwright
 // (playwright-core) drives Debian's headless Chromium against a live cutcalc.
 //
 //   - first load: every section shows the result of its default inputs without a click, from
 //     exactly one calculation (the requests one calculation of that section sends);
 //   - links: per section, an edited calculation's "Copy link" URL opened in a new page gives the
 //     same inputs and the same shown numbers;
+//   - "Copy as curl": per section, the copied commands, run with `sh -c` against the live server,
+//     are the requests the page sent (same URL and body) and print the answers the page got;
+//   - "Download CSV": each table's file, parsed with an RFC 4180 parser, is the shown table (the Rz
+//     curve: the curve the page received); header of field names and units, '.' decimals, CRLF,
+//     and the page's CSV writer quotes commas, quotes and line breaks;
 //   - typing several characters quickly is one request (after the pause), Enter calculates at once;
 //   - back and forward restore the previous calculation (inputs and results, across sections);
-//   - at 375 px and 1280 px "Copy link" works from the keyboard alone (Tab, Enter);
+//   - at 375 px and 1280 px the new buttons work from the keyboard alone (Tab, Enter);
 //   - on every page: no console error, page error, failed request, HTTP error or CSP violation.
 // The clipboard: the context is granted clipboard-read/write and the test reads what the page
 // wrote with navigator.clipboard.readText().
@@ -16,10 +21,12 @@
 // calculator.test.mjs.
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync } from 'node:fs';
+import { execFile } from 'node:child_process';
+import { mkdirSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { promisify } from 'node:util';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, '..', '..');
@@ -50,16 +57,19 @@ const SECTIONS = [
     id: 'entry',
     requests: { '/v1/entry-length': 1, '/v1/main-time': 1, '/v1/main-time/program': 1 },
     edit: ['/cutter_diameter_mm', '25'],
+    csv: { button: 'entry-passes-csv', table: true },
   },
   {
     id: 'speeds',
     requests: { '/v1/resultant-speeds': 3 },
     edit: ['/tool_speed_rpm', '2500'],
+    csv: { button: 'speeds-points-csv', table: true },
   },
   {
     id: 'groove',
     requests: { '/v1/roughness/groove-wall': 1 },
     edit: ['/feed_mm', '0.2'],
+    csv: { button: 'groove-curve-csv', curve: '/v1/roughness/groove-wall' },
   },
   { id: 'bore', requests: { '/v1/roughness/bore-milling': 1 }, edit: ['/teeth', '6'] },
   { id: 'polygon', requests: { '/v1/polygon-hole/gcode': 1 }, edit: ['/faces', '5'] },
@@ -200,6 +210,70 @@ async function calculateWith(page, log, id, name, text) {
   await settle(log);
 }
 
+// ------------------------------------------------------------------ RFC 4180
+// Records of CSV text: fields separated by commas, records by CRLF; a quoted field may hold
+// commas, CRLF and doubled quotes. Strict: a quote inside an unquoted field is an error.
+function parseCsv(text) {
+  const records = [];
+  let record = [];
+  let field = '';
+  let i = 0;
+  let quoted = false;
+  while (i < text.length) {
+    const c = text[i];
+    if (quoted) {
+      if (c === '"' && text[i + 1] === '"') {
+        field += '"';
+        i += 2;
+      } else if (c === '"') {
+        quoted = false;
+        i += 1;
+        assert.ok(i >= text.length || text[i] === ',' || text.startsWith('\r\n', i), `CSV: text after a closing quote at ${i}`);
+      } else {
+        field += c;
+        i += 1;
+      }
+    } else if (c === '"') {
+      assert.equal(field, '', `CSV: a quote inside an unquoted field at ${i}`);
+      quoted = true;
+      i += 1;
+    } else if (c === ',') {
+      record.push(field);
+      field = '';
+      i += 1;
+    } else if (text.startsWith('\r\n', i)) {
+      record.push(field);
+      records.push(record);
+      record = [];
+      field = '';
+      i += 2;
+    } else {
+      assert.ok(c !== '\r' && c !== '\n', `CSV: a bare line break at ${i} (records end with CRLF)`);
+      field += c;
+      i += 1;
+    }
+  }
+  assert.ok(!quoted, 'CSV: an unterminated quoted field');
+  assert.ok(field === '' && record.length === 0, 'CSV: the last record does not end with CRLF');
+  return records;
+}
+
+async function downloadText(page, action) {
+  const [download] = await Promise.all([page.waitForEvent('download', { timeout: WAIT_MS }), action()]);
+  return { name: download.suggestedFilename(), text: readFileSync(await download.path(), 'utf8') };
+}
+
+// A CSV cell against the value it stands for: numbers as numbers (the cell with '.' decimals),
+// everything else as text.
+function assertCell(cell, want, where) {
+  if (typeof want === 'number' || (want !== '' && want !== null && !Number.isNaN(Number(want)) && /^[-+0-9.eE]+$/.test(String(want)))) {
+    assert.match(cell, /^-?\d+(\.\d+)?(e[-+]?\d+)?$/, `${where}: "${cell}" is not a number with '.' decimals`);
+    assert.equal(Number(cell), Number(want), `${where}: ${cell} != ${want}`);
+  } else {
+    assert.equal(cell, String(want ?? ''), where);
+  }
+}
+
 // ================================================================== the tests
 describe('calculator page as a shop tool', () => {
   test('first load: every section shows its results without a click, from one calculation each', { timeout: TEST_MS }, async () => {
@@ -254,6 +328,91 @@ describe('calculator page as a shop tool', () => {
       }
     });
   }
+
+  for (const section of SECTIONS) {
+    test(`${section.id}: "Copy as curl" run with sh -c sends the page's requests and prints its answers`, { timeout: TEST_MS }, async () => {
+      const { context, page, log } = await openPage(PAGE_URL);
+      try {
+        await settle(log);
+        const sent = sectionExchanges(log.exchanges, section.id);
+        await page.locator(`#${section.id}-copy-curl`).click();
+        await page.waitForFunction(id => /copied/.test(document.getElementById(`${id}-copy-status`)?.textContent ?? ''), section.id);
+        const script = await readClipboard(page);
+        const commands = script.split('\n');
+        assert.equal(commands.length, sent.length, `one curl command per request the page sent:\n${script.slice(0, 500)}`);
+        // Each command names a request the page sent: the same URL and the same body, byte for byte.
+        const unquote = word => word.slice(1, -1).replaceAll("'\\''", "'");
+        const requested = commands.map(command => {
+          const url = /^curl -sS ('(?:[^']|'\\'')*')/.exec(command);
+          const body = / --data-raw ('(?:[^']|'\\'')*')/.exec(command);
+          assert.ok(url && body, `not a curl command of the page: ${command.slice(0, 200)}`);
+          return `${unquote(url[1])} ${unquote(body[1])}`;
+        });
+        assert.deepEqual(requested.sort(), sent.map(e => `${e.url} ${e.body}`).sort(), 'the commands are the requests the page sent');
+
+        const { stdout } = await promisify(execFile)('sh', ['-c', script], { maxBuffer: 64 * 1024 * 1024 });
+        const answers = stdout.split('\n').filter(line => line !== '');
+        assert.equal(answers.length, sent.length, 'one answer per command');
+        const canonical = answers.map(line => JSON.stringify(JSON.parse(line))).sort();
+        assert.deepEqual(canonical, sent.map(e => JSON.stringify(e.json)).sort(), 'the answers are the ones the page got');
+        console.log(`# ${section.id}: ${commands.length} curl command(s), answers equal to the page's`);
+        await assertClean(page, log, `${section.id} curl`);
+      } finally {
+        await context.close();
+      }
+    });
+  }
+
+  for (const section of SECTIONS.filter(s => s.csv)) {
+    test(`${section.id}: "Download CSV" is the shown ${section.csv.table ? 'table' : 'Rz curve'} (RFC 4180)`, { timeout: TEST_MS }, async () => {
+      const { context, page, log } = await openPage(PAGE_URL);
+      try {
+        await settle(log);
+        const { name, text } = await downloadText(page, () => page.locator(`#${section.csv.button}`).click());
+        assert.match(name, /\.csv$/, `the file name ${name}`);
+        const [header, ...rows] = parseCsv(text);
+        for (const cell of header) assert.match(cell, /^[a-z][a-z0-9_]*( \[[^\]]+\])?$/, `header cell "${cell}": a field name, its unit in brackets`);
+        let want;
+        if (section.csv.table) {
+          // The table next to the button: its rows' cells (a row header, then data-value cells).
+          want = await page.evaluate(id => {
+            const table = document.getElementById(id).previousElementSibling.querySelector('table');
+            return [...table.tBodies[0].rows].map(row =>
+              [...row.cells].map(cell => cell.querySelector('[data-value]')?.getAttribute('data-value') ?? cell.textContent.trim()),
+            );
+          }, section.csv.button);
+        } else {
+          const exchange = log.exchanges.find(e => e.path === section.csv.curve && e.status === 200);
+          want = exchange.json.curve.map(p => header.map(h => p[h.split(' ')[0]]));
+          assert.deepEqual(header.map(h => h.split(' ')[0]), ['feed_mm', 'rz_um'], 'the curve\'s columns');
+        }
+        assert.ok(want.length > 0, 'the table has rows');
+        assert.equal(rows.length, want.length, 'one CSV record per table row');
+        rows.forEach((row, i) => {
+          assert.equal(row.length, header.length, `record ${i + 1} has as many fields as the header`);
+          row.forEach((cell, j) => assertCell(cell, want[i][j], `${name} record ${i + 1}, ${header[j]}`));
+        });
+        console.log(`# ${section.id}: ${name}, ${rows.length} records of ${header.length} fields equal to the page's`);
+        await assertClean(page, log, `${section.id} CSV`);
+      } finally {
+        await context.close();
+      }
+    });
+  }
+
+  test('the CSV writer quotes commas, quotes and line breaks (RFC 4180)', { timeout: TEST_MS }, async () => {
+    const { context, page, log } = await openPage(PAGE_URL);
+    try {
+      const rows = [['a,b', 'say "x"', 'two\r\nlines', 'plain', 1.5, -2e-7]];
+      const text = await page.evaluate(async rows => (await import('/ui/export.js')).csvText(['h1', 'h2', 'h3', 'h4', 'h5', 'h6'], rows), rows);
+      assert.equal(text.split('\r\n')[0], 'h1,h2,h3,h4,h5,h6');
+      assert.deepEqual(parseCsv(text), [['h1', 'h2', 'h3', 'h4', 'h5', 'h6'], ['a,b', 'say "x"', 'two\r\nlines', 'plain', '1.5', '-2e-7']]);
+      await settle(log);
+      await assertClean(page, log, 'CSV writer');
+    } finally {
+      await context.close();
+    }
+  });
 
   test('typing several characters quickly is one request; Enter calculates at once', { timeout: TEST_MS }, async () => {
     const { context, page, log } = await openPage(PAGE_URL);
@@ -320,11 +479,11 @@ describe('calculator page as a shop tool', () => {
 });
 
 // ================================================================== keyboard only
-// Tab from the top of the page to each "Copy link" and press Enter on it: the link lands in the
-// clipboard; the page never scrolls sideways.
+// Tab from the top of the page to each new button and press Enter on it: the links and curl
+// commands land in the clipboard, the CSV files download; the page never scrolls sideways.
 for (const width of [375, 1280]) {
   describe(`shop tools at ${width} px, keyboard only`, () => {
-    test('Copy link is reached with Tab and used with Enter', { timeout: TEST_MS }, async () => {
+    test('Copy link, Copy as curl and Download CSV are reached with Tab and used with Enter', { timeout: TEST_MS }, async () => {
       const { context, page, log } = await openPage(PAGE_URL, { width, height: 812 });
       try {
         await settle(log);
@@ -347,15 +506,25 @@ for (const width of [375, 1280]) {
           await page.waitForFunction(id => /copied/.test(document.getElementById(`${id}-copy-status`)?.textContent ?? ''), id);
           return readClipboard(page);
         };
+        let files = 0;
         for (const section of SECTIONS) {
           await tabTo(`${section.id}-copy-link`);
           assert.equal(new URL(await copied(section.id)).hash, `#${section.id}`, `${section.id}: the link`);
+          await tabTo(`${section.id}-copy-curl`);
+          assert.match(await copied(section.id), /^curl -sS '/, `${section.id}: the curl command`);
+          if (section.csv) {
+            await tabTo(section.csv.button);
+            const { name, text } = await downloadText(page, () => page.keyboard.press('Enter'));
+            assert.match(name, /\.csv$/);
+            assert.ok(parseCsv(text).length > 1, `${name} has records`);
+            files += 1;
+          }
           const overflow = await page.evaluate(() => document.scrollingElement.scrollWidth);
           assert.ok(overflow <= width, `the page scrolls sideways at ${width} px (${overflow})`);
         }
         await page.evaluate(() => window.scrollTo(0, 0));
         await page.screenshot({ path: path.join(ARTIFACT_DIR, `shop-tool-${width}.png`), fullPage: true });
-        console.log(`# ${width} px: 5 links from the keyboard`);
+        console.log(`# ${width} px: 5 links, 5 curl commands and ${files} CSV files from the keyboard`);
         await assertClean(page, log, `${width} px keyboard`);
       } finally {
         await context.close();

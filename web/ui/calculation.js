@@ -4,7 +4,7 @@
 // meanwhile runs after it (several such become one), so the result shown is always that of the
 // latest inputs and never overwritten by an older answer arriving late.
 
-import * as api from './api.js';
+import { apiClient } from './api.js';
 import { clearErrors, showMessage } from './form.js';
 import { signature } from './url_state.js';
 
@@ -15,9 +15,10 @@ export const PAUSE_MS = 600;
 // calculation only when the inputs changed; 'submit' (Enter, Calculate) and 'load' always run.
 const ALWAYS = new Set(['submit', 'load']);
 
-// Wires `calculate(api)` to the form and returns its controller. `api` sends the calculation's
-// requests (api.js). The form announces each calculation with a 'calculation-start'
-// event and its end with 'calculated' (detail: {cause}).
+// Wires `calculate(api)` to the form and returns its controller. `api` is the client to send the
+// calculation's requests with: they are kept (controller.requests) for "Copy as curl". The form
+// announces each calculation with a 'calculation-start' event and its end with 'calculated'
+// (detail: {cause, requests}).
 export function onCalculate(form, calculate) {
   let timer = 0;
   let running = null; // the loop below, while it runs
@@ -28,6 +29,7 @@ export function onCalculate(form, calculate) {
   const controller = {
     id: form.closest('section').id,
     form,
+    requests: [],
     // Runs a calculation now (or right after the one running); resolves when the form is idle.
     calculate(cause) {
       clearTimeout(timer);
@@ -62,15 +64,17 @@ export function onCalculate(form, calculate) {
     form.dispatchEvent(new CustomEvent('calculation-start', { detail: { cause } }));
     clearErrors(form);
     form.setAttribute('aria-busy', 'true');
+    const requests = [];
     try {
-      await calculate(api);
+      await calculate(apiClient((request) => requests.push(request)));
     } catch (error) {
       showMessage(form, `The page failed: ${error?.message ?? error}`);
       console.error(error);
     } finally {
       form.removeAttribute('aria-busy');
     }
-    form.dispatchEvent(new CustomEvent('calculated', { detail: { cause } }));
+    controller.requests = requests;
+    form.dispatchEvent(new CustomEvent('calculated', { detail: { cause, requests } }));
   }
 
   const afterPause = () => {

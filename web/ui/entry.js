@@ -4,6 +4,7 @@
 
 import { RawNumber } from './api.js';
 import { onCalculate } from './calculation.js';
+import { csvButton } from './export.js';
 import {
   h,
   noDiagram,
@@ -478,5 +479,11 @@ function timeResults(body) {
       depths.map((_, i) => [i ? ', ' : '', value(body, `/depth_passes_mm/${i}`, 'mm', TIME)]),
     ),
     h('div', { class: 'table-wrap' }, table),
+    csvButton(
+      'entry-passes-csv',
+      'main-time-passes.csv',
+      [['pass', ''], ...columns.map(([key, , unit]) => [key, unit])],
+      passes.map((pass, i) => [i + 1, ...columns.map(([key]) => pass[key])]),
+    ),
   ];
 }

@@ -2,6 +2,7 @@
 // problem messages next to the fields, and the result elements (data-result / data-value).
 
 import { fileNameOf, numberLiteral, postJson, RawNumber } from './api.js';
+import { saveFile } from './export.js';
 
 // Element builder: h('p', {class: 'x', 'data-a': 1}, 'text', child, ...). Attributes only: no
 // inline style, no HTML strings (the page runs under a strict Content-Security-Policy).
@@ -254,12 +255,7 @@ export async function downloadProgram(form, path, body, fallback) {
       return;
     }
     const name = fileNameOf(answer.headers.get('Content-Disposition'), fallback);
-    const url = URL.createObjectURL(new Blob([answer.text], { type: 'text/plain' }));
-    const link = h('a', { href: url, download: name, hidden: true });
-    document.body.append(link);
-    link.click();
-    link.remove();
-    setTimeout(() => URL.revokeObjectURL(url), 10000);
+    saveFile(name, answer.text, 'text/plain');
   } catch (error) {
     showMessage(form, `Download failed: ${error?.message ?? error}`);
   }

@@ -2,6 +2,7 @@
 // |v_e| along the whole engagement arc for up- and down-milling (two requests with arc_samples).
 
 import { onCalculate } from './calculation.js';
+import { csvButton } from './export.js';
 import { h, noDiagram, readBody, showFailure, sym, value, valueList } from './form.js';
 import { domain, figure, plot, points, s } from './svg.js';
 
@@ -108,6 +109,12 @@ function pointResults(body) {
       [['Engagement half-angle ', ...sym('\u03c1', 'e')], '/engagement_half_angle_deg', 'deg'],
     ]),
     h('div', { class: 'table-wrap' }, table),
+    csvButton(
+      'speeds-points-csv',
+      'resultant-speeds-points.csv',
+      columns().map(([key, , unit]) => [key, unit]),
+      list.map((point) => columns().map(([key]) => point[key])),
+    ),
   ];
 }
 
