@@ -34,43 +34,58 @@ export function numberLiteral(text) {
   return sign + int + frac + exp;
 }
 
-// POSTs `body` as JSON. Returns {ok, status, json, text, headers}; a problem body is in `json`.
-export async function postJson(path, body, accept = 'application/json') {
-  let response;
-  try {
-    response = await fetch(path, {
-      method: 'POST',
-      headers: { 'Content-Type': 'application/json', Accept: accept },
-      body: toJson(body),
-    });
-  } catch (error) {
-    return { ok: false, status: 0, json: null, text: '', headers: null, networkError: error };
-  }
-  const text = await response.text();
-  let json = null;
-  const type = response.headers.get('Content-Type') ?? '';
-  if (/^application\/([a-z0-9.+-]*\+)?json/i.test(type)) {
+// A client for the API. `onSend` sees every request as it goes out ({path, accept, body}, the
+// body as the exact JSON text sent), so that a calculation can be repeated outside the page
+// ("Copy as curl").
+export function apiClient(onSend = () => {}) {
+  // POSTs `body` as JSON. Returns {ok, status, json, text, headers}; a problem body is in `json`.
+  async function postJson(path, body, accept = 'application/json') {
+    const text = toJson(body);
+    onSend({ path, accept, body: text });
+    let response;
     try {
-      json = JSON.parse(text);
-    } catch {
-      json = null;
+      response = await fetch(path, {
+        method: 'POST',
+        headers: { 'Content-Type': 'application/json', Accept: accept },
+        body: text,
+      });
+    } catch (error) {
+      return { ok: false, status: 0, json: null, text: '', headers: null, networkError: error };
     }
+    const answer = await response.text();
+    let json = null;
+    const type = response.headers.get('Content-Type') ?? '';
+    if (/^application\/([a-z0-9.+-]*\+)?json/i.test(type)) {
+      try {
+        json = JSON.parse(answer);
+      } catch {
+        json = null;
+      }
+    }
+    const { ok, status, headers } = response;
+    return { ok, status, json, text: answer, headers };
   }
-  return { ok: response.ok, status: response.status, json, text, headers: response.headers };
+
+  // POSTs `body` plus the opt-in field `key` (plot geometry). A service that does not know the
+  // field yet answers 422 "unknown field" at /key: then the request is repeated without it, and
+  // the answer says `optInRefused`, so the page shows its numbers with a "no diagram data" note.
+  // With `retry` false the refused answer itself is returned (for requests made for a diagram
+  // only).
+  async function postWithOptIn(path, body, key, value, retry = true) {
+    const first = await postJson(path, { ...body, [key]: value });
+    const refused = first.status === 422 && Array.isArray(first.json?.errors);
+    const errors = refused ? first.json.errors : [];
+    if (!errors.some((e) => e.pointer === `/${key}`)) return first;
+    if (!retry) return { ...first, optInRefused: true };
+    const second = await postJson(path, body);
+    return { ...second, optInRefused: true };
+  }
+
+  return { postJson, postWithOptIn };
 }
 
-// POSTs `body` plus the opt-in field `key` (plot geometry). A service that does not know the field
-// yet answers 422 "unknown field" at /key: then the request is repeated without it, and the
-// answer says `optInRefused`, so the page shows its numbers with a "no diagram data" note.
-// With `retry` false the refused answer itself is returned (for requests made for a diagram only).
-export async function postWithOptIn(path, body, key, value, retry = true) {
-  const first = await postJson(path, { ...body, [key]: value });
-  const errors = first.status === 422 && Array.isArray(first.json?.errors) ? first.json.errors : [];
-  if (!errors.some((e) => e.pointer === `/${key}`)) return first;
-  if (!retry) return { ...first, optInRefused: true };
-  const second = await postJson(path, body);
-  return { ...second, optInRefused: true };
-}
+// The client of requests nobody needs to repeat (downloads).
+export const { postJson, postWithOptIn } = apiClient();
 
 // The file name of a Content-Disposition header (attachment; filename="x.ngc"), or `fallback`.
 export function fileNameOf(disposition, fallback) {

@@ -1,13 +1,13 @@
 // Bore milling roughness (paper 001): the cusp between adjacent tooth paths.
 
-import { postJson } from './api.js';
-import { h, onCalculate, readBody, showFailure, sym, valueList } from './form.js';
+import { onCalculate } from './calculation.js';
+import { h, readBody, showFailure, sym, valueList } from './form.js';
 
 export function init() {
   const form = document.getElementById('bore-form');
   const result = document.getElementById('bore-result');
-  onCalculate(form, async () => {
-    const answer = await postJson('/v1/roughness/bore-milling', readBody(form));
+  return onCalculate(form, async (api) => {
+    const answer = await api.postJson('/v1/roughness/bore-milling', readBody(form));
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);

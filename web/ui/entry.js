@@ -2,11 +2,12 @@
 // POST /v1/entry-length (one pass, with its scheme for the drawings) and POST /v1/main-time
 // (every lateral and depth pass).
 
-import { postJson, postWithOptIn, RawNumber } from './api.js';
+import { RawNumber } from './api.js';
+import { onCalculate } from './calculation.js';
+import { csvButton } from './export.js';
 import {
   h,
   noDiagram,
-  onCalculate,
   readBody,
   downloadProgram,
   showFailure,
@@ -39,16 +40,16 @@ export function init() {
   const download = document.getElementById('entry-download');
   let programRequest = null; // the body of the last program that was written
   wireContourFields(form);
-  onCalculate(form, async () => {
+  const calculator = onCalculate(form, async (api) => {
     // The pass program takes the main-time request plus the `program` options.
     const programBody = { ...readBody(form, TIME), ...readBody(form, PROGRAM) };
     // A program needs a straight path: with an extra path L1 the page does not ask for one.
     const extra = programBody.extra_path_mm;
     const straight = extra === undefined || (extra instanceof RawNumber && Number(extra.text) === 0);
     const [length, time, program] = await Promise.all([
-      postWithOptIn('/v1/entry-length', readBody(form, LENGTH), 'include_scheme', true),
-      postJson('/v1/main-time', readBody(form, TIME)),
-      straight ? postJson(PROGRAM_PATH, programBody) : Promise.resolve(null),
+      api.postWithOptIn('/v1/entry-length', readBody(form, LENGTH), 'include_scheme', true),
+      api.postJson('/v1/main-time', readBody(form, TIME)),
+      straight ? api.postJson(PROGRAM_PATH, programBody) : Promise.resolve(null),
     ]);
     if (!length.ok) showFailure(form, length, 'Entry length');
     if (!time.ok) showFailure(form, time, 'Main time');
@@ -79,6 +80,7 @@ export function init() {
       download.disabled = programRequest === null;
     }
   });
+  return calculator;
 }
 
 // ------------------------------------------------------------------ the program (main-time/program)
@@ -477,5 +479,11 @@ function timeResults(body) {
       depths.map((_, i) => [i ? ', ' : '', value(body, `/depth_passes_mm/${i}`, 'mm', TIME)]),
     ),
     h('div', { class: 'table-wrap' }, table),
+    csvButton(
+      'entry-passes-csv',
+      'main-time-passes.csv',
+      [['pass', ''], ...columns.map(([key, , unit]) => [key, unit])],
+      passes.map((pass, i) => [i + 1, ...columns.map(([key]) => pass[key])]),
+    ),
   ];
 }

@@ -2,6 +2,7 @@
 // problem messages next to the fields, and the result elements (data-result / data-value).
 
 import { fileNameOf, numberLiteral, postJson, RawNumber } from './api.js';
+import { saveFile } from './export.js';
 
 // Element builder: h('p', {class: 'x', 'data-a': 1}, 'text', child, ...). Attributes only: no
 // inline style, no HTML strings (the page runs under a strict Content-Security-Policy).
@@ -182,25 +183,6 @@ export function showMessage(form, message) {
   formError(form, message);
 }
 
-// Runs `calculate` on submit (Enter in any field or the Calculate button) with the form's errors
-// cleared first and the form marked busy meanwhile.
-export function onCalculate(form, calculate) {
-  form.addEventListener('submit', async (event) => {
-    event.preventDefault();
-    if (form.getAttribute('aria-busy') === 'true') return;
-    clearErrors(form);
-    form.setAttribute('aria-busy', 'true');
-    try {
-      await calculate();
-    } catch (error) {
-      formError(form, `The page failed: ${error?.message ?? error}`);
-      console.error(error);
-    } finally {
-      form.removeAttribute('aria-busy');
-    }
-  });
-}
-
 // ------------------------------------------------------------------ results
 
 // A number for people: at most 4 decimals (trailing zeros dropped), 4 significant digits for
@@ -273,12 +255,7 @@ export async function downloadProgram(form, path, body, fallback) {
       return;
     }
     const name = fileNameOf(answer.headers.get('Content-Disposition'), fallback);
-    const url = URL.createObjectURL(new Blob([answer.text], { type: 'text/plain' }));
-    const link = h('a', { href: url, download: name, hidden: true });
-    document.body.append(link);
-    link.click();
-    link.remove();
-    setTimeout(() => URL.revokeObjectURL(url), 10000);
+    saveFile(name, answer.text, 'text/plain');
   } catch (error) {
     showMessage(form, `Download failed: ${error?.message ?? error}`);
   }

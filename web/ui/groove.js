@@ -1,13 +1,13 @@
 // Groove-wall roughness (paper 003): Rz of the feed marks, the branch of the model and, with a
 // target, the largest feed; the plot Rz(feed) comes from the same request (curve_points).
 
-import { postWithOptIn } from './api.js';
+import { onCalculate } from './calculation.js';
+import { csvButton } from './export.js';
 import {
   at,
   fmt,
   h,
   noDiagram,
-  onCalculate,
   readBody,
   showFailure,
   sym,
@@ -17,6 +17,11 @@ import { domain, figure, plot, points, s } from './svg.js';
 
 const PATH = '/v1/roughness/groove-wall';
 const CURVE_POINTS = 200;
+// The curve's fields (the answer's curve[] items) and units, for its CSV.
+const CURVE_COLUMNS = [
+  ['feed_mm', 'mm'],
+  ['rz_um', '\u00b5m'],
+];
 
 const BRANCHES = {
   nose_arc: 'between two nose arcs',
@@ -27,9 +32,9 @@ const BRANCHES = {
 export function init() {
   const form = document.getElementById('groove-form');
   const result = document.getElementById('groove-result');
-  onCalculate(form, async () => {
+  return onCalculate(form, async (api) => {
     const body = readBody(form);
-    const answer = await postWithOptIn(PATH, body, 'curve_points', CURVE_POINTS);
+    const answer = await api.postWithOptIn(PATH, body, 'curve_points', CURVE_POINTS);
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);
@@ -51,7 +56,15 @@ export function init() {
       ),
     );
     if (Array.isArray(response.curve) && response.curve.length >= 2) {
-      result.append(rzPlot(response, Number(body.feed_mm?.text), Number(body.target_rz_um?.text)));
+      result.append(
+        rzPlot(response, Number(body.feed_mm?.text), Number(body.target_rz_um?.text)),
+        csvButton(
+          'groove-curve-csv',
+          'groove-wall-rz-curve.csv',
+          CURVE_COLUMNS,
+          response.curve.map((point) => CURVE_COLUMNS.map(([key]) => point[key])),
+        ),
+      );
     } else {
       result.append(
         noDiagram(

@@ -1,12 +1,11 @@
 // Polygon-hole G-code (paper 004): the program, its figures, the predicted hole and its corner,
 // and the program as a .ngc download (the same request with Accept: text/plain).
 
-import { postWithOptIn } from './api.js';
+import { onCalculate } from './calculation.js';
 import {
   fmt,
   h,
   noDiagram,
-  onCalculate,
   readBody,
   downloadProgram,
   showFailure,
@@ -26,9 +25,9 @@ export function init() {
   const program = document.getElementById('polygon-program');
   let calculated = null; // the body of the last successful calculation
 
-  onCalculate(form, async () => {
+  const calculator = onCalculate(form, async (api) => {
     const body = withoutDefaultProgram(readBody(form));
-    const answer = await postWithOptIn(PATH, body, 'include_geometry', true);
+    const answer = await api.postWithOptIn(PATH, body, 'include_geometry', true);
     result.replaceChildren();
     if (!answer.ok) {
       calculated = null;
@@ -58,6 +57,7 @@ export function init() {
       download.disabled = calculated === null;
     }
   });
+  return calculator;
 }
 
 function programResults(answer, container) {

@@ -1,8 +1,9 @@
 // Resultant cutting speeds in turn-milling (paper 000): the points the user asked for, and
 // |v_e| along the whole engagement arc for up- and down-milling (two requests with arc_samples).
 
-import { postJson, postWithOptIn } from './api.js';
-import { h, noDiagram, onCalculate, readBody, showFailure, sym, value, valueList } from './form.js';
+import { onCalculate } from './calculation.js';
+import { csvButton } from './export.js';
+import { h, noDiagram, readBody, showFailure, sym, value, valueList } from './form.js';
 import { domain, figure, plot, points, s } from './svg.js';
 
 const PATH = '/v1/resultant-speeds';
@@ -11,12 +12,12 @@ const ARC_SAMPLES = 91;
 export function init() {
   const form = document.getElementById('speeds-form');
   const result = document.getElementById('speeds-result');
-  onCalculate(form, async () => {
+  return onCalculate(form, async (api) => {
     const body = readBody(form);
     const arcBody = { ...body };
     delete arcBody.contact_angles_deg;
     // The requested points first (their answer is the section's result), then the two arcs.
-    const main = await postJson(PATH, body);
+    const main = await api.postJson(PATH, body);
     result.replaceChildren();
     if (!main.ok) {
       showFailure(form, main);
@@ -25,8 +26,8 @@ export function init() {
     }
     result.append(...pointResults(main.json));
     const [up, down] = await Promise.all([
-      postWithOptIn(PATH, { ...arcBody, milling: 'up' }, 'arc_samples', ARC_SAMPLES, false),
-      postWithOptIn(PATH, { ...arcBody, milling: 'down' }, 'arc_samples', ARC_SAMPLES, false),
+      api.postWithOptIn(PATH, { ...arcBody, milling: 'up' }, 'arc_samples', ARC_SAMPLES, false),
+      api.postWithOptIn(PATH, { ...arcBody, milling: 'down' }, 'arc_samples', ARC_SAMPLES, false),
     ]);
     if (up.ok && down.ok && !up.optInRefused && !down.optInRefused) {
       result.append(speedPlot(up.json.points, down.json.points, main.json));
@@ -108,6 +109,12 @@ function pointResults(body) {
       [['Engagement half-angle ', ...sym('\u03c1', 'e')], '/engagement_half_angle_deg', 'deg'],
     ]),
     h('div', { class: 'table-wrap' }, table),
+    csvButton(
+      'speeds-points-csv',
+      'resultant-speeds-points.csv',
+      columns().map(([key, , unit]) => [key, unit]),
+      list.map((point) => columns().map(([key]) => point[key])),
+    ),
   ];
 }
 

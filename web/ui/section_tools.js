@@ -1,0 +1,31 @@
+// The buttons every section has beside Calculate: "Copy link" (the section's inputs in a URL,
+// see url_state.js) and "Copy as curl" (the requests of the section's last calculation, exactly
+// as the page sent them), with one status line saying what was copied.
+
+import { copyText } from './clipboard.js';
+import { curlScript } from './export.js';
+import { h } from './form.js';
+import { sectionLink } from './url_state.js';
+
+export function wireSectionTools(calculators) {
+  for (const { id, form } of calculators) {
+    const link = h('button', { type: 'button', id: `${id}-copy-link` }, 'Copy link');
+    // Nothing to copy before the first calculation has been sent.
+    const curl = h(
+      'button',
+      { type: 'button', id: `${id}-copy-curl`, disabled: true },
+      'Copy as curl',
+    );
+    const status = h('p', { class: 'copy-status', id: `${id}-copy-status`, role: 'status' });
+    form.querySelector('.actions').append(link, curl);
+    form.append(status);
+
+    let sent = [];
+    form.addEventListener('calculated', (event) => {
+      sent = event.detail.requests;
+      curl.disabled = sent.length === 0;
+    });
+    link.addEventListener('click', () => copyText(sectionLink(id, form), 'Link', status));
+    curl.addEventListener('click', () => copyText(curlScript(sent), 'curl command', status));
+  }
+}

@@ -1,0 +1,91 @@
+// The page's state in its URL, so that a link reproduces a calculation (format in README.md):
+//
+//   /?groove.feed_mm=0.2&groove.nose_radius_mm=0.3&groove.minor_edge_angle_deg=2
+//     &groove.target_rz_um=#groove      (one line)
+//
+// A key with a dot is one input of one section: the section's id, then the input's name (its
+// JSON Pointer) with '.' for '/' (entry.allowance.width_mm is /allowance/width_mm of #entry-form).
+// The value is the text as typed ("1,5" stays "1,5"); an empty value is an empty input. A section
+// in the URL lists every input of its request, so the link keeps its meaning when the page's
+// defaults change; a section not in the URL shows its defaults. Keys without a dot are page-wide
+// settings (reserved: lang, units); the page keeps them, and ignores keys it does not know.
+
+import { controls } from './form.js';
+
+const keyOf = (sectionId, pointer) => `${sectionId}${pointer.replaceAll('/', '.')}`;
+const isPageSetting = (key) => !key.includes('.');
+
+// The inputs of the form's request (its enabled named controls) as [name, text] pairs: the list
+// of a section's fields comes from the form itself.
+export function fieldValues(form) {
+  return controls(form).map((c) => [c.name, c.value]);
+}
+
+// A key for "the same inputs": a calculation is repeated only when this changes.
+export function signature(form) {
+  return JSON.stringify(fieldValues(form));
+}
+
+function defaultValue(control) {
+  if (control.tagName !== 'SELECT') return control.defaultValue;
+  const option = [...control.options].find((o) => o.defaultSelected) ?? control.options[0];
+  return option?.value ?? '';
+}
+
+export function differsFromDefaults(form) {
+  return controls(form).some((c) => c.value !== defaultValue(c));
+}
+
+function appendSection(params, sectionId, form) {
+  for (const [name, text] of fieldValues(form)) params.append(keyOf(sectionId, name), text);
+}
+
+// The page-wide settings of the current URL, to carry into every URL the page writes.
+function pageSettings() {
+  const params = new URLSearchParams();
+  for (const [key, text] of new URLSearchParams(window.location.search)) {
+    if (isPageSetting(key)) params.append(key, text);
+  }
+  return params;
+}
+
+function urlWith(params, sectionId) {
+  const url = new URL(window.location.href);
+  url.search = params.toString();
+  url.hash = sectionId;
+  return url.href;
+}
+
+// The link to one section's calculation (with the page-wide settings).
+export function sectionLink(sectionId, form) {
+  const params = pageSettings();
+  appendSection(params, sectionId, form);
+  return urlWith(params, sectionId);
+}
+
+// The URL of the whole page: every section whose inputs differ from its defaults, scrolled to
+// `sectionId`. sections = [{id, form}, ...].
+export function pageUrl(sections, sectionId) {
+  const params = pageSettings();
+  for (const { id, form } of sections) {
+    if (differsFromDefaults(form)) appendSection(params, id, form);
+  }
+  return urlWith(params, sectionId);
+}
+
+// Sets the form to the section's inputs in `search` (a URL's query), its defaults where the URL
+// has none. A select keeps its default when the URL names no option of it. The selects are
+// announced (change events) so that the fields that depend on them are shown or hidden.
+export function applyToForm(form, sectionId, search) {
+  const params = new URLSearchParams(search);
+  form.reset();
+  const selects = [...form.querySelectorAll('select[name^="/"]')];
+  for (const control of form.querySelectorAll('input[name^="/"], select[name^="/"]')) {
+    const text = params.get(keyOf(sectionId, control.name));
+    if (text === null) continue;
+    const known = control.tagName !== 'SELECT' || [...control.options].some((o) => o.value === text);
+    if (!known) continue;
+    control.value = text;
+  }
+  for (const select of selects) select.dispatchEvent(new Event('change', { bubbles: true }));
+}
