@@ -13,7 +13,7 @@ const MIN_DRAWN_ANGLE_DEG = 24;
 // counter-clockwise on screen (y grows downwards).
 const towards = (angle) => [Math.sin(angle), Math.cos(angle)];
 
-// Both views in one row (app.css may lay them side by side).
+// Both views side by side where there is room (print), else one under the other.
 export function boreDiagrams(inputs, answer, container) {
   return h(
     'div',
