@@ -1,5 +1,6 @@
 // Bore milling roughness (paper 001): the cusp between adjacent tooth paths.
 
+import { boreDiagrams } from './bore_diagram.js';
 import { onCalculate } from './calculation.js';
 import { h, readBody, showFailure, sym, valueList } from './form.js';
 
@@ -7,7 +8,8 @@ export function init() {
   const form = document.getElementById('bore-form');
   const result = document.getElementById('bore-result');
   return onCalculate(form, async (api) => {
-    const answer = await api.postJson('/v1/roughness/bore-milling', readBody(form));
+    const body = readBody(form);
+    const answer = await api.postJson('/v1/roughness/bore-milling', body);
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);
@@ -31,6 +33,16 @@ export function init() {
         'p',
         { class: 'source-note' },
         'The kinematic cusp between ideal tooth paths: a lower bound of the profile height.',
+      ),
+      boreDiagrams(
+        {
+          boreRadius: Number(body.bore_radius_mm?.text),
+          cutterRadius: Number(body.cutter_radius_mm?.text),
+          teeth: Number(body.teeth?.text),
+          milling: body.milling,
+        },
+        answer.json,
+        result,
       ),
     );
   });

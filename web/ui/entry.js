@@ -119,7 +119,16 @@ function programResults(body) {
           warnings.map((w, i) => h('li', {}, value(body, `/warnings/${i}/code`), ': ', w.detail)),
         )
       : [],
-    h('pre', { id: 'entry-program', tabindex: '0', 'aria-label': 'G-code program' }, body.program),
+    h(
+      'pre',
+      {
+        id: 'entry-program',
+        tabindex: '0',
+        'aria-label': 'G-code program',
+        'data-file-name': body.file_name,
+      },
+      body.program,
+    ),
   ];
 }
 

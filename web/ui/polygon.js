@@ -34,6 +34,7 @@ export function init() {
       download.disabled = true;
       showFailure(form, answer);
       program.textContent = '';
+      delete program.dataset.fileName;
       program.hidden = true;
       result.append(
         h('p', { class: 'placeholder' }, 'No results: see the messages in the form.'),
@@ -44,6 +45,7 @@ export function init() {
     calculated = body;
     download.disabled = false;
     program.textContent = answer.json.program;
+    program.dataset.fileName = answer.json.file_name;
     program.hidden = false;
     result.append(...programResults(answer, result), h('h3', {}, 'G-code'), program);
   });

@@ -50,6 +50,21 @@ function fitText(svg) {
   observer?.observe(svg);
 }
 
+// Printed, a diagram is as wide as its --print-width (app.css), whatever its width on screen: its
+// text is sized for that width while the page prints, and for the screen again afterwards.
+const PRINT_TEXT_PX = 11;
+const CSS_PX_PER_CM = 96 / 2.54;
+window.addEventListener('beforeprint', () => {
+  for (const svg of document.querySelectorAll('svg.diagram')) {
+    const cm = parseFloat(getComputedStyle(svg).getPropertyValue('--print-width'));
+    const box = svg.viewBox.baseVal;
+    if (cm > 0 && box && box.width > 0) {
+      svg.setAttribute('font-size', String(r6((PRINT_TEXT_PX * box.width) / (cm * CSS_PX_PER_CM))));
+    }
+  }
+});
+window.addEventListener('afterprint', () => document.querySelectorAll('svg.diagram').forEach(fit));
+
 // User units per screen pixel for a diagram of `viewBoxWidth` drawn in `container` (estimate
 // used for arrowheads and label offsets at drawing time).
 export function unitsPerPixel(viewBoxWidth, container) {

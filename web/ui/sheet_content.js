@@ -1,0 +1,74 @@
+// What a printed setup sheet adds to a section's results (see print_sheet.js): the inputs of the
+// calculation as a table (form controls print poorly), a link that reproduces it, and, for a
+// program, its file name and header. Built from the form and the shown program, so the labels,
+// symbols and units are the page's own, whatever language or units it shows them in.
+
+import { h } from './form.js';
+import { sectionLink } from './url_state.js';
+
+// Lines of a program shown on the sheet when it has no safe-height rapid to end its header on.
+const FALLBACK_HEADER_LINES = 12;
+
+// The inputs of `form` as a table: one group per fieldset, a row per applicable field
+// (label with its symbol | value | unit); a field hidden because it does not apply is left out.
+export function inputsTable(form) {
+  const table = h('table', { class: 'sheet-inputs' }, h('caption', {}, 'Inputs'));
+  for (const fieldset of form.querySelectorAll('fieldset')) {
+    const rows = [...fieldset.querySelectorAll('.field')]
+      .filter((field) => !field.hidden)
+      .map(inputRow)
+      .filter(Boolean);
+    if (rows.length === 0) continue;
+    const legend = fieldset.querySelector('legend')?.textContent ?? '';
+    table.append(
+      h('tbody', {}, h('tr', {}, h('th', { colspan: 3, scope: 'colgroup' }, legend)), rows),
+    );
+  }
+  return table;
+}
+
+function inputRow(field) {
+  const control = field.querySelector('input[name^="/"], select[name^="/"]');
+  const label = field.querySelector('label');
+  if (!control || !label) return null;
+  const { quantity, unit } = splitUnit(label);
+  const shown =
+    control.tagName === 'SELECT'
+      ? (control.selectedOptions[0]?.textContent ?? control.value)
+      : control.value.trim() || '\u2014';
+  return h(
+    'tr',
+    { 'data-input': control.name },
+    h('th', { scope: 'row' }, quantity),
+    h('td', { class: 'num' }, shown),
+    h('td', { class: 'unit' }, unit),
+  );
+}
+
+// A label reads "quantity symbol, unit": its nodes without the unit, and the unit.
+function splitUnit(label) {
+  const quantity = [...label.cloneNode(true).childNodes];
+  const last = quantity.at(-1);
+  const match = last?.nodeType === Node.TEXT_NODE ? /,\s*([^,]+)$/.exec(last.textContent) : null;
+  if (!match) return { quantity, unit: '' };
+  last.textContent = last.textContent.slice(0, match.index);
+  return { quantity, unit: match[1].trim() };
+}
+
+export function linkLine(id, form) {
+  return h('p', { class: 'sheet-link' }, 'Calculation: ', sectionLink(id, form));
+}
+
+// The program's file name and header (its blocks up to the first rapid to the safe height, where
+// the passes begin, spec programs.md), from the shown program `pre` (data-file-name).
+export function programHeader(pre) {
+  if (!pre || pre.hidden || !pre.textContent) return [];
+  const lines = pre.textContent.split('\n');
+  const safe = lines.findIndex((line) => /^G0?0\b.*Z/.test(line.trim()));
+  const header = lines.slice(0, safe >= 0 ? safe + 1 : FALLBACK_HEADER_LINES);
+  return [
+    h('h3', {}, 'Program header'),
+    h('p', {}, 'File ', h('span', { class: 'sheet-file-name' }, pre.dataset.fileName ?? '')),
+    h('pre', { class: 'sheet-program-header' }, header.join('\n')),
+  ];
+}
