@@ -37,9 +37,9 @@ export function numberLiteral(text) {
   return sign + int + frac + exp;
 }
 
-// A client for the API. `onSend` sees every request as it goes out ({path, accept, language, body}, the
-// body as the exact JSON text sent), so that a calculation can be repeated outside the page
-// ("Copy as curl").
+// A client for the API. `onSend` sees every request as it goes out ({path, accept, language,
+// body}, the body as the exact JSON text sent), so that a calculation can be repeated outside the
+// page ("Copy as curl").
 export function apiClient(onSend = () => {}) {
   // POSTs `body` as JSON. Returns {ok, status, json, text, headers}; a problem body is in `json`.
   async function postJson(path, body, accept = 'application/json') {
@@ -49,7 +49,11 @@ export function apiClient(onSend = () => {}) {
     try {
       response = await fetch(path, {
         method: 'POST',
-        headers: { 'Content-Type': 'application/json', Accept: accept, 'Accept-Language': language },
+        headers: {
+          'Content-Type': 'application/json',
+          Accept: accept,
+          'Accept-Language': language,
+        },
         body: text,
       });
     } catch (error) {

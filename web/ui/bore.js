@@ -18,14 +18,31 @@ export function init() {
     result.append(
       h('h3', {}, t('result.cusp_title')),
       valueList(answer.json, [
-        [[t('result.cusp_height'), ' ', ...sym('\u0394'), ' ', t('result.exact')], '/cusp_height_um', 'um'],
         [
-          [t('result.approximation'), ' ', ...sym('f', 'zb'), h('var', { class: 'sym' }, '\u00b2/8 (1/r \u2212 1/R)')],
+          [t('result.cusp_height'), ' ', ...sym('\u0394'), ' ', t('result.exact')],
+          '/cusp_height_um',
+          'um',
+        ],
+        [
+          [
+            t('result.approximation'),
+            ' ',
+            ...sym('f', 'zb'),
+            h('var', { class: 'sym' }, '\u00b2/8 (1/r \u2212 1/R)'),
+          ],
           '/approximate_cusp_height_um',
           'um',
         ],
-        [[t('result.feed_per_tooth'), ' ', ...sym('f', 'z'), ' ', t('result.centre_path')], '/feed_per_tooth_mm', 'mm_per_tooth'],
-        [[t('result.feed_per_tooth'), ' ', ...sym('f', 'zb'), ' ', t('result.on_bore')], '/feed_per_tooth_on_bore_mm', 'mm_per_tooth'],
+        [
+          [t('result.feed_per_tooth'), ' ', ...sym('f', 'z'), ' ', t('result.centre_path')],
+          '/feed_per_tooth_mm',
+          'mm_per_tooth',
+        ],
+        [
+          [t('result.feed_per_tooth'), ' ', ...sym('f', 'zb'), ' ', t('result.on_bore')],
+          '/feed_per_tooth_on_bore_mm',
+          'mm_per_tooth',
+        ],
         [[t('result.pitch_angle'), ' ', ...sym('\u03b1')], '/pitch_angle_deg', 'deg'],
       ]),
       h(

@@ -124,7 +124,11 @@ function programResults(body) {
       }),
     ),
     warningList(body),
-    h('pre', { id: 'entry-program', tabindex: '0', 'aria-label': t('result.g_code_program') }, body.program),
+    h(
+      'pre',
+      { id: 'entry-program', tabindex: '0', 'aria-label': t('result.g_code_program') },
+      body.program,
+    ),
   ];
 }
 
@@ -473,9 +477,21 @@ function timeResults(body) {
         [[t('result.at_entry_feed')], '/entry_time_min', 'min'],
         [[t('result.at_steady_feed')], '/steady_time_min', 'min'],
         [[t('result.spindle_speed'), ' ', ...sym('n')], '/spindle_speed_rpm', 'rpm'],
-        [[t('result.feed_per_rev'), ' ', ...sym('S', 'o'), ...iso('f')], '/feed_per_rev_mm', 'mm_per_rev'],
-        [[t('result.feed'), ' ', ...sym('S', 'm2'), ...iso('v', 'f')], '/feed_mm_per_min', 'mm_per_min'],
-        [[t('result.entry_feed'), ' ', ...sym('S', 'm1'), ...iso('v', 'f1')], '/entry_feed_mm_per_min', 'mm_per_min'],
+        [
+          [t('result.feed_per_rev'), ' ', ...sym('S', 'o'), ...iso('f')],
+          '/feed_per_rev_mm',
+          'mm_per_rev',
+        ],
+        [
+          [t('result.feed'), ' ', ...sym('S', 'm2'), ...iso('v', 'f')],
+          '/feed_mm_per_min',
+          'mm_per_min',
+        ],
+        [
+          [t('result.entry_feed'), ' ', ...sym('S', 'm1'), ...iso('v', 'f1')],
+          '/entry_feed_mm_per_min',
+          'mm_per_min',
+        ],
       ],
       TIME,
     ),

@@ -221,7 +221,14 @@ export function at(body, pointer) {
 // `bare` (a table column names it), beside it. `unit` is the API's unit id (catalogue unit.<id>).
 // `source` names the answering endpoint where a section has two. `describe` turns a string value
 // (a code such as "nose_arc") into words for people.
-export function value(body, pointer, unit = '', source = undefined, describe = undefined, bare = false) {
+export function value(
+  body,
+  pointer,
+  unit = '',
+  source = undefined,
+  describe = undefined,
+  bare = false,
+) {
   const v = at(body, pointer);
   const shown = typeof v === 'number' ? fmt(fromApi(v, unit)) : (describe?.(v) ?? String(v));
   const num = h(

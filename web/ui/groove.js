@@ -46,7 +46,11 @@ export function init() {
       h('h3', {}, t('result.theoretical_roughness')),
       valueList(response, [
         [[t('result.crest_height'), ' ', ...sym('Rz', 'p')], '/rz_um', 'um'],
-        [[t('result.largest_feed'), ' ', ...sym('S', 'max'), ...iso('f', 'max')], '/max_feed_mm', 'mm'],
+        [
+          [t('result.largest_feed'), ' ', ...sym('S', 'max'), ...iso('f', 'max')],
+          '/max_feed_mm',
+          'mm',
+        ],
         [[t('result.crest_formed_by')], '/branch', '', describeBranch],
       ]),
       h(
@@ -120,7 +124,11 @@ function rzPlot(response, feedMm, target) {
           x2: area.right,
           y2: y(target),
         }),
-        s('text', { x: area.left + 4, y: y(target), dy: '-0.4em' }, `T = ${fmt(target)} ${unitText('um')}`),
+        s(
+          'text',
+          { x: area.left + 4, y: y(target), dy: '-0.4em' },
+          `T = ${fmt(target)} ${unitText('um')}`,
+        ),
       ),
     );
     const maxFeed = fromApi(response.max_feed_mm, 'mm');

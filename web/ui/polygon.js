@@ -75,7 +75,11 @@ function programResults(answer, container) {
       [[t('result.predicted_overcut')], '/predicted_overcut_mm', 'mm'],
       [[t('result.corner_gap'), ' ', ...sym('g')], '/corner_gap_mm', 'mm'],
       [[t('result.uncut_corner_area')], '/uncut_corner_area_mm2', 'mm2'],
-      [[t('result.block_rate_feed_limit'), ' ', ...sym('v', 'f')], '/max_feed_by_block_rate_mm_per_min', 'mm_per_min'],
+      [
+        [t('result.block_rate_feed_limit'), ' ', ...sym('v', 'f')],
+        '/max_feed_by_block_rate_mm_per_min',
+        'mm_per_min',
+      ],
     ]),
   ];
   parts.push(warningList(body));
@@ -207,7 +211,10 @@ function cornerDiagram(geometry, body) {
     s(
       'text',
       { x: cx - half, y: cy - half, dx: '0.5em', dy: '1.3em' },
-      t('diagram.corner_gap', { value: fmt(fromApi(body.corner_gap_mm, 'mm')), unit: unitText('mm') }),
+      t('diagram.corner_gap', {
+        value: fmt(fromApi(body.corner_gap_mm, 'mm')),
+        unit: unitText('mm'),
+      }),
     ),
   );
   return figure(svg, [

@@ -54,7 +54,11 @@ const columns = () => [
   ['workpiece_speed_m_per_min', sym('v', 'S2'), 'm_per_min'],
   ['resultant_feed_mm_per_min', ['|', ...sym('u', 's'), '|'], 'mm_per_min'],
   ['resultant_speed_m_per_min', ['|', ...sym('v', 'e'), '|'], 'm_per_min'],
-  ['resultant_angle_deg', [t('result.angle'), ' ', ...sym('v', 'T'), '\u2192', ...sym('v', 'e')], 'deg'],
+  [
+    'resultant_angle_deg',
+    [t('result.angle'), ' ', ...sym('v', 'T'), '\u2192', ...sym('v', 'e')],
+    'deg',
+  ],
   ['sense', [t('result.sense')], ''],
   ['kinematic_ratio', sym('i', 'k'), ''],
   ['normal_speed_m_per_min', sym('v', 'N'), 'm_per_min'],
@@ -111,7 +115,11 @@ function pointResults(body) {
   return [
     h('h3', {}, t('result.engagement_arc')),
     valueList(body, [
-      [[t('result.engagement_half_angle'), ' ', ...sym('\u03c1', 'e')], '/engagement_half_angle_deg', 'deg'],
+      [
+        [t('result.engagement_half_angle'), ' ', ...sym('\u03c1', 'e')],
+        '/engagement_half_angle_deg',
+        'deg',
+      ],
     ]),
     h('div', { class: 'table-wrap' }, table),
     csvButton(

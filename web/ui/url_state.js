@@ -40,7 +40,9 @@ export function differsFromDefaults(form) {
 // `text` gives the text of a control to write (the value as typed, or as converted when the
 // units change).
 function appendSection(params, sectionId, form, text = (control) => control.value) {
-  for (const control of controls(form)) params.append(keyOf(sectionId, control.name), text(control));
+  for (const control of controls(form)) {
+    params.append(keyOf(sectionId, control.name), text(control));
+  }
 }
 
 // The page-wide settings of the current URL, to carry into every URL the page writes.
