@@ -3,9 +3,9 @@
 # Chromium, driven by Playwright (playwright-core from tools/e2e, never a downloaded browser), against
 # a live release cutcalc: every section filled with a reference case, submitted, its numbers and
 # diagrams checked, the G-code download, an invalid input's message, keyboard-only use and no
-# horizontal scroll at 375 px, the printed setup sheets (PDF, read with poppler's pdftotext), and no
-# console error or failed request (tests/e2e/*.test.mjs); CORS from pages on other loopback origins
-# against a second cutcalc with --cors-origin (cors.test.mjs).
+# horizontal scroll at 375 px, the printed setup sheets (PDF, read with poppler's pdftotext), the
+# page in Russian and in inches, and no console error or failed request (tests/e2e/*.test.mjs); CORS
+# from pages on other loopback origins against a second cutcalc with --cors-origin (cors.test.mjs).
 # Screenshots of the final page at 1280 px and 375 px go to build/e2e/ (for people, not assertions).
 #
 # Environment (all optional):

@@ -1,4 +1,7 @@
-// Talking to the cutcalc API: JSON bodies with the numbers exactly as typed, problem+json answers.
+// Talking to the cutcalc API: JSON bodies with the numbers exactly as typed, problem+json answers
+// in the page's language (Accept-Language).
+
+import { language } from './i18n.js';
 
 // A number as the user typed it, written into the JSON text verbatim (normalised to JSON's
 // grammar), so that the service, not the browser, judges it: 1e400 is the service's "too large",
@@ -34,19 +37,23 @@ export function numberLiteral(text) {
   return sign + int + frac + exp;
 }
 
-// A client for the API. `onSend` sees every request as it goes out ({path, accept, body}, the
-// body as the exact JSON text sent), so that a calculation can be repeated outside the page
-// ("Copy as curl").
+// A client for the API. `onSend` sees every request as it goes out ({path, accept, language,
+// body}, the body as the exact JSON text sent), so that a calculation can be repeated outside the
+// page ("Copy as curl").
 export function apiClient(onSend = () => {}) {
   // POSTs `body` as JSON. Returns {ok, status, json, text, headers}; a problem body is in `json`.
   async function postJson(path, body, accept = 'application/json') {
     const text = toJson(body);
-    onSend({ path, accept, body: text });
+    onSend({ path, accept, language, body: text });
     let response;
     try {
       response = await fetch(path, {
         method: 'POST',
-        headers: { 'Content-Type': 'application/json', Accept: accept },
+        headers: {
+          'Content-Type': 'application/json',
+          Accept: accept,
+          'Accept-Language': language,
+        },
         body: text,
       });
     } catch (error) {

@@ -3,6 +3,7 @@
 import { boreDiagrams } from './bore_diagram.js';
 import { onCalculate } from './calculation.js';
 import { h, readBody, showFailure, sym, valueList } from './form.js';
+import { t } from './i18n.js';
 
 export function init() {
   const form = document.getElementById('bore-form');
@@ -13,26 +14,43 @@ export function init() {
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);
-      result.append(h('p', { class: 'placeholder' }, 'No results: see the messages in the form.'));
+      result.append(h('p', { class: 'placeholder' }, t('result.no_results')));
       return;
     }
     result.append(
-      h('h3', {}, 'Cusp between adjacent tooth paths'),
+      h('h3', {}, t('result.cusp_title')),
       valueList(answer.json, [
-        [['Cusp height \u0394 (exact)'], '/cusp_height_um', '\u00b5m'],
         [
-          ['Approximation ', ...sym('f', 'zb'), '\u00b2/8 (1/r \u2212 1/R)'],
-          '/approximate_cusp_height_um',
-          '\u00b5m',
+          [t('result.cusp_height'), ' ', ...sym('\u0394'), ' ', t('result.exact')],
+          '/cusp_height_um',
+          'um',
         ],
-        [['Feed per tooth ', ...sym('f', 'z'), ' (centre path)'], '/feed_per_tooth_mm', 'mm'],
-        [['Feed per tooth ', ...sym('f', 'zb'), ' (bore)'], '/feed_per_tooth_on_bore_mm', 'mm'],
-        [['Pitch angle \u03b1'], '/pitch_angle_deg', 'deg'],
+        [
+          [
+            t('result.approximation'),
+            ' ',
+            ...sym('f', 'zb'),
+            h('var', { class: 'sym' }, '\u00b2/8 (1/r \u2212 1/R)'),
+          ],
+          '/approximate_cusp_height_um',
+          'um',
+        ],
+        [
+          [t('result.feed_per_tooth'), ' ', ...sym('f', 'z'), ' ', t('result.centre_path')],
+          '/feed_per_tooth_mm',
+          'mm_per_tooth',
+        ],
+        [
+          [t('result.feed_per_tooth'), ' ', ...sym('f', 'zb'), ' ', t('result.on_bore')],
+          '/feed_per_tooth_on_bore_mm',
+          'mm_per_tooth',
+        ],
+        [[t('result.pitch_angle'), ' ', ...sym('\u03b1')], '/pitch_angle_deg', 'deg'],
       ]),
       h(
         'p',
         { class: 'source-note' },
-        'The kinematic cusp between ideal tooth paths: a lower bound of the profile height.',
+        t('result.cusp_note'),
       ),
       boreDiagrams(
         {

@@ -6,6 +6,7 @@
 
 import { apiClient } from './api.js';
 import { clearErrors, showMessage } from './form.js';
+import { t } from './i18n.js';
 import { signature } from './url_state.js';
 
 // Long enough for a few keystrokes (and for a test to fill several fields) to count as one edit.
@@ -68,7 +69,7 @@ export function onCalculate(form, calculate) {
     try {
       await calculate(apiClient((request) => requests.push(request)));
     } catch (error) {
-      showMessage(form, `The page failed: ${error?.message ?? error}`);
+      showMessage(form, t('error.page_failed', { reason: error?.message ?? error }));
       console.error(error);
     } finally {
       form.removeAttribute('aria-busy');

@@ -27,19 +27,19 @@ async function writeText(text) {
   return copied;
 }
 
-// Copies `text`, then says `what` was copied in `status`; when nothing could copy it, the text is
-// shown there, selected, to copy by hand.
-export async function copyText(text, what, status) {
+// Copies `text`, then says so in `status` (messages: {copied, failed, name} in the page's
+// language); when nothing could copy it, the text is shown there, selected, to copy by hand.
+export async function copyText(text, messages, status) {
   const copied = await writeText(text);
   if (copied) {
-    status.replaceChildren(`${what} copied.`);
+    status.replaceChildren(messages.copied);
     return;
   }
   const area = document.createElement('textarea');
   area.value = text;
   area.readOnly = true;
   area.rows = 3;
-  area.setAttribute('aria-label', what);
-  status.replaceChildren(`Could not copy the ${what.toLowerCase()}: copy it from here.`, area);
+  area.setAttribute('aria-label', messages.name);
+  status.replaceChildren(messages.failed, area);
   area.select();
 }

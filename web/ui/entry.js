@@ -11,9 +11,11 @@ import {
   readBody,
   downloadProgram,
   showFailure,
+  iso,
   sym,
   value,
   valueList,
+  warningList,
   wireContourFields,
   fmt,
 } from './form.js';
@@ -28,6 +30,11 @@ import {
   s,
   unitsPerPixel,
 } from './svg.js';
+import { t, tn } from './i18n.js';
+import { csvUnit, fromApi, unitText } from './units.js';
+
+// " = 12.5 mm" for a dimension line: the length in the page's units.
+const lengthText = (mm) => ` = ${fmt(fromApi(mm, 'mm'))} ${unitText('mm')}`;
 
 const LENGTH = 'entry-length';
 const TIME = 'main-time';
@@ -51,10 +58,10 @@ export function init() {
       api.postJson('/v1/main-time', readBody(form, TIME)),
       straight ? api.postJson(PROGRAM_PATH, programBody) : Promise.resolve(null),
     ]);
-    if (!length.ok) showFailure(form, length, 'Entry length');
-    if (!time.ok) showFailure(form, time, 'Main time');
+    if (!length.ok) showFailure(form, length, t('result.entry_length'));
+    if (!time.ok) showFailure(form, time, t('result.main_time'));
     // The program repeats main-time's own errors: only its own are shown.
-    if (time.ok && program && !program.ok) showFailure(form, program, 'Program');
+    if (time.ok && program && !program.ok) showFailure(form, program, t('result.program'));
     programRequest = program?.ok ? programBody : null;
     download.disabled = programRequest === null;
     result.replaceChildren();
@@ -63,11 +70,11 @@ export function init() {
     if (program?.ok) result.append(...programResults(program.json));
     if (time.ok && !straight) {
       result.append(
-        h('p', { class: 'source-note' }, 'No program: a program needs a straight path (L1 = 0).'),
+        h('p', { class: 'source-note' }, tn('result.no_program_extra_path')),
       );
     }
     if (!length.ok && !time.ok) {
-      result.append(h('p', { class: 'placeholder' }, 'No results: see the messages in the form.'));
+      result.append(h('p', { class: 'placeholder' }, t('result.no_results')));
     }
   });
 
@@ -86,45 +93,43 @@ export function init() {
 // ------------------------------------------------------------------ the program (main-time/program)
 
 function programResults(body) {
-  const warnings = Array.isArray(body.warnings) ? body.warnings : [];
   return [
-    h('h3', {}, 'Program'),
+    h('h3', {}, t('result.program')),
     h(
       'p',
       { class: 'source-note' },
-      `From ${PROGRAM_PATH}: ${body.dialect}, ${body.units}, file ${body.file_name}. `,
-      'The feed switches from the entry feed to the steady feed at the end of each entry section, ',
-      'so the feed time is the main time.',
+      t('result.program_from', {
+        path: PROGRAM_PATH,
+        dialect: body.dialect,
+        units: t(`program_units.${body.units}`),
+        file: body.file_name,
+      }),
     ),
     valueList(
       body,
       [
-        [['Passes (lateral \u00d7 depth)'], '/passes', ''],
-        [['Feed time (= main time)'], '/working_time_min', 'min'],
-        [['Plunges'], '/plunge_time_min', 'min'],
-        [['Rapids'], '/rapid_time_min', 'min'],
-        [['Cycle time'], '/cycle_time_min', 'min'],
+        [[t('result.passes_lateral_depth')], '/passes', ''],
+        [[t('result.feed_time')], '/working_time_min', 'min'],
+        [[t('result.plunges')], '/plunge_time_min', 'min'],
+        [[t('result.rapids')], '/rapid_time_min', 'min'],
+        [[t('result.cycle_time')], '/cycle_time_min', 'min'],
       ],
       PROGRAM,
     ),
     h(
       'p',
       { class: 'source-note' },
-      `Not in the times: ${(body.not_modelled ?? []).join(', ').replaceAll('_', ' ')}.`,
+      t('result.not_in_times', {
+        list: (body.not_modelled ?? []).map((code) => t(`not_modelled.${code}`)).join(', '),
+      }),
     ),
-    warnings.length
-      ? h(
-          'ul',
-          { class: 'warnings' },
-          warnings.map((w, i) => h('li', {}, value(body, `/warnings/${i}/code`), ': ', w.detail)),
-        )
-      : [],
+    warningList(body),
     h(
       'pre',
       {
         id: 'entry-program',
         tabindex: '0',
-        'aria-label': 'G-code program',
+        'aria-label': t('result.g_code_program'),
         'data-file-name': body.file_name,
       },
       body.program,
@@ -137,19 +142,19 @@ function programResults(body) {
 function lengthResults(answer, container) {
   const body = answer.json;
   const parts = [
-    h('h3', {}, 'One pass: coordinates and entry length'),
-    h('p', { class: 'source-note' }, 'From /v1/entry-length (offset K, the whole strip).'),
+    h('h3', {}, t('result.one_pass')),
+    h('p', { class: 'source-note' }, t('result.from_entry_length')),
     valueList(
       body,
       [
-        [['Start ', ...sym('X', 'n')], '/start/x_mm', 'mm'],
-        [['Start ', ...sym('Y', 'n')], '/start/y_mm', 'mm'],
-        [['End ', ...sym('X', 'k')], '/end/x_mm', 'mm'],
-        [['End ', ...sym('Y', 'k')], '/end/y_mm', 'mm'],
-        [['Engagement length ', ...sym('L', 'vr1')], '/engagement_length_mm', 'mm'],
-        [['Entry length ', ...sym('L', 'vr')], '/entry_length_mm', 'mm'],
-        [['Steady width W'], '/steady_width_mm', 'mm'],
-        [['Working stroke ', ...sym('L', 'rx')], '/working_stroke_mm', 'mm'],
+        [[t('result.start'), ' ', ...sym('X', 'n')], '/start/x_mm', 'mm'],
+        [[t('result.start'), ' ', ...sym('Y', 'n')], '/start/y_mm', 'mm'],
+        [[t('result.end'), ' ', ...sym('X', 'k')], '/end/x_mm', 'mm'],
+        [[t('result.end'), ' ', ...sym('Y', 'k')], '/end/y_mm', 'mm'],
+        [[t('result.engagement_length'), ' ', ...sym('L', 'vr1')], '/engagement_length_mm', 'mm'],
+        [[t('result.entry_length'), ' ', ...sym('L', 'vr')], '/entry_length_mm', 'mm'],
+        [[t('result.steady_width'), ' ', ...sym('W')], '/steady_width_mm', 'mm'],
+        [[t('result.working_stroke'), ' ', ...sym('L', 'rx')], '/working_stroke_mm', 'mm'],
       ],
       LENGTH,
     ),
@@ -159,8 +164,8 @@ function lengthResults(answer, container) {
     parts.push(
       noDiagram(
         answer.optInRefused
-          ? 'this service does not return the entry scheme yet.'
-          : 'the answer has no scheme.',
+          ? t('result.no_scheme_yet')
+          : t('result.no_scheme'),
       ),
     );
     return parts;
@@ -269,7 +274,7 @@ function drawAxesHint(svg, size, feedAt) {
       { 'data-role': 'feed' },
       s('line', { class: 's-feed', x1: fx, y1: fy, x2: fx + size * 1.6, y2: fy }),
       arrowHead(fx + size * 1.6, fy, 1, 0, size * 0.3),
-      s('text', { x: fx + size * 1.6, y: fy, dx: '0.3em', dy: '0.35em' }, 'feed'),
+      s('text', { x: fx + size * 1.6, y: fy, dx: '0.3em', dy: '0.35em' }, t('diagram.feed')),
     ),
   );
 }
@@ -316,7 +321,7 @@ function entryScheme(scheme, body, container) {
 
   const svg = diagram(
     'entry-scheme',
-    'Entry scheme to scale: workpiece, contour, steady band and the cutter at start, first contact and saturation',
+    t('diagram.entry_scheme_title'),
     box.viewBox(0.03),
   );
   drawFrame(
@@ -341,7 +346,7 @@ function entryScheme(scheme, body, container) {
         y: topRow,
         from1: y1,
         from2: y2,
-        text: subText('L', 'vr', ` = ${fmt(body.entry_length_mm)} mm`),
+        text: subText('L', 'vr', lengthText(body.entry_length_mm)),
         arrow: 8 * upp,
       }),
     );
@@ -353,7 +358,7 @@ function entryScheme(scheme, body, container) {
         y: bottomRow,
         from1: 0,
         from2: y1,
-        text: subText('X', 'n', ` = ${fmt(start.x_mm)} mm`),
+        text: subText('X', 'n', lengthText(start.x_mm)),
         arrow: 8 * upp,
       }),
     );
@@ -362,14 +367,14 @@ function entryScheme(scheme, body, container) {
   return figure(
     svg,
     [
-      { cls: 's-workpiece', label: 'workpiece', shape: 'area' },
-      { cls: 's-contour', label: 'entry contour' },
-      { cls: 's-band', label: 'steady band', shape: 'area' },
-      { cls: 's-cutter s-cutter-start', label: 'cutter at start' },
-      { cls: 's-cutter s-cutter-first-contact', label: 'first contact' },
-      { cls: 's-cutter s-cutter-saturation', label: 'saturation' },
+      { cls: 's-workpiece', label: t('legend.workpiece'), shape: 'area' },
+      { cls: 's-contour', label: t('legend.entry_contour') },
+      { cls: 's-band', label: t('legend.steady_band'), shape: 'area' },
+      { cls: 's-cutter s-cutter-start', label: t('legend.cutter_at_start') },
+      { cls: 's-cutter s-cutter-first-contact', label: t('legend.first_contact') },
+      { cls: 's-cutter s-cutter-saturation', label: t('legend.saturation') },
     ],
-    'Entry frame: X against the feed from the entry origin, Y across the strip; to scale.',
+    t('diagram.entry_frame'),
   );
 }
 
@@ -381,7 +386,7 @@ function exitScheme(scheme, body, container) {
 
   const svg = diagram(
     'exit-scheme',
-    'Exit scheme to scale: workpiece, exit contour, steady band and the cutter at the end position',
+    t('diagram.exit_scheme_title'),
     box.viewBox(0.03),
   );
   drawFrame(svg, frame, radius, [['end', 'cutter-end']], box);
@@ -395,7 +400,7 @@ function exitScheme(scheme, body, container) {
         y: bottomRow,
         from1: 0,
         from2: y1,
-        text: subText('X', 'k', ` = ${fmt(end.x_mm)} mm`),
+        text: subText('X', 'k', lengthText(end.x_mm)),
         arrow: 8 * upp,
       }),
     );
@@ -404,12 +409,12 @@ function exitScheme(scheme, body, container) {
   return figure(
     svg,
     [
-      { cls: 's-workpiece', label: 'workpiece', shape: 'area' },
-      { cls: 's-contour', label: 'exit contour' },
-      { cls: 's-band', label: 'steady band', shape: 'area' },
-      { cls: 's-cutter s-cutter-end', label: 'cutter at the end' },
+      { cls: 's-workpiece', label: t('legend.workpiece'), shape: 'area' },
+      { cls: 's-contour', label: t('legend.exit_contour') },
+      { cls: 's-band', label: t('legend.steady_band'), shape: 'area' },
+      { cls: 's-cutter s-cutter-end', label: t('legend.cutter_at_the_end') },
     ],
-    'Exit frame: X against the feed from the exit origin; to scale.',
+    t('diagram.exit_frame'),
   );
 }
 
@@ -419,14 +424,14 @@ function timeResults(body) {
   const passes = Array.isArray(body.lateral_passes) ? body.lateral_passes : [];
   const depths = Array.isArray(body.depth_passes_mm) ? body.depth_passes_mm : [];
   const columns = [
-    ['width_mm', ['Width ', ...sym('W', 'i')], 'mm'],
-    ['axis_y_mm', ['Axis Y'], 'mm'],
-    ['offset_mm', ['Offset ', ...sym('K', 'i')], 'mm'],
-    ['entry_length_mm', ['Entry length ', ...sym('L', 'vr')], 'mm'],
-    ['working_stroke_mm', ['Stroke ', ...sym('L', 'rx')], 'mm'],
-    ['entry_time_min', ['Entry time'], 'min'],
-    ['steady_time_min', ['Steady time'], 'min'],
-    ['time_min', ['Time'], 'min'],
+    ['width_mm', [t('result.width'), ' ', ...sym('W', 'i')], 'mm'],
+    ['axis_y_mm', [t('result.axis'), ' ', ...sym('Y')], 'mm'],
+    ['offset_mm', [t('result.offset'), ' ', ...sym('K', 'i')], 'mm'],
+    ['entry_length_mm', [t('result.entry_length'), ' ', ...sym('L', 'vr')], 'mm'],
+    ['working_stroke_mm', [t('result.stroke'), ' ', ...sym('L', 'rx')], 'mm'],
+    ['entry_time_min', [t('result.entry_time')], 'min'],
+    ['steady_time_min', [t('result.steady_time')], 'min'],
+    ['time_min', [t('result.time')], 'min'],
   ];
   const table = h(
     'table',
@@ -434,7 +439,7 @@ function timeResults(body) {
     h(
       'caption',
       { class: 'source-note' },
-      'Lateral passes, one traverse each (repeated at every depth level)',
+      t('result.lateral_passes'),
     ),
     h(
       'thead',
@@ -442,9 +447,9 @@ function timeResults(body) {
       h(
         'tr',
         {},
-        h('th', { scope: 'col' }, 'Pass'),
+        h('th', { scope: 'col' }, t('result.pass')),
         columns.map(([, label, unit]) =>
-          h('th', { scope: 'col' }, label, h('br'), h('span', { class: 'unit' }, unit)),
+          h('th', { scope: 'col' }, label, h('br'), h('span', { class: 'unit' }, unitText(unit))),
         ),
       ),
     ),
@@ -456,42 +461,56 @@ function timeResults(body) {
           'tr',
           {},
           h('th', { scope: 'row' }, String(i + 1)),
-          columns.map(([key]) => h('td', {}, value(body, `/lateral_passes/${i}/${key}`, '', TIME))),
+          columns.map(([key, , unit]) =>
+            h('td', {}, value(body, `/lateral_passes/${i}/${key}`, unit, TIME, undefined, true)),
+          ),
         ),
       ),
     ),
   );
   return [
-    h('h3', {}, 'Main time of the setup'),
+    h('h3', {}, t('result.main_time_of_setup')),
     h(
       'p',
       { class: 'source-note' },
-      'From /v1/main-time (every lateral pass at every depth level).',
+      t('result.from_main_time'),
     ),
     valueList(
       body,
       [
-        [['Main time ', ...sym('T', 'o')], '/main_time_min', 'min'],
-        [['at the entry feed'], '/entry_time_min', 'min'],
-        [['at the steady feed'], '/steady_time_min', 'min'],
-        [['Spindle speed n'], '/spindle_speed_rpm', 'rev/min'],
-        [['Feed per rev ', ...sym('S', 'o')], '/feed_per_rev_mm', 'mm/rev'],
-        [['Feed ', ...sym('S', 'm2')], '/feed_mm_per_min', 'mm/min'],
-        [['Entry feed ', ...sym('S', 'm1')], '/entry_feed_mm_per_min', 'mm/min'],
+        [[t('result.main_time'), ' ', ...sym('T', 'o')], '/main_time_min', 'min'],
+        [[t('result.at_entry_feed')], '/entry_time_min', 'min'],
+        [[t('result.at_steady_feed')], '/steady_time_min', 'min'],
+        [[t('result.spindle_speed'), ' ', ...sym('n')], '/spindle_speed_rpm', 'rpm'],
+        [
+          [t('result.feed_per_rev'), ' ', ...sym('S', 'o'), ...iso('f')],
+          '/feed_per_rev_mm',
+          'mm_per_rev',
+        ],
+        [
+          [t('result.feed'), ' ', ...sym('S', 'm2'), ...iso('v', 'f')],
+          '/feed_mm_per_min',
+          'mm_per_min',
+        ],
+        [
+          [t('result.entry_feed'), ' ', ...sym('S', 'm1'), ...iso('v', 'f1')],
+          '/entry_feed_mm_per_min',
+          'mm_per_min',
+        ],
       ],
       TIME,
     ),
     h(
       'p',
       {},
-      'Depth passes: ',
+      t('result.depth_passes'),
       depths.map((_, i) => [i ? ', ' : '', value(body, `/depth_passes_mm/${i}`, 'mm', TIME)]),
     ),
     h('div', { class: 'table-wrap' }, table),
     csvButton(
       'entry-passes-csv',
       'main-time-passes.csv',
-      [['pass', ''], ...columns.map(([key, , unit]) => [key, unit])],
+      [['pass', ''], ...columns.map(([key, , unit]) => [key, csvUnit(unit)])],
       passes.map((pass, i) => [i + 1, ...columns.map(([key]) => pass[key])]),
     ),
   ];

@@ -1,18 +1,22 @@
 // Results out of the page: a calculation's requests as curl commands, a table as CSV, a file
-// saved from the browser. (No import of the page's modules: form.js saves programs with this.)
+// saved from the browser. (No import of the page's form modules: form.js saves programs with
+// this.)
+
+import { t } from './i18n.js';
 
 // `text` as one shell word: single quotes, a quote inside as '\'' (POSIX sh).
 const shellWord = (text) => `'${text.replaceAll("'", "'\\''")}'`;
 
 // The request as a curl command that sends exactly the same bytes to the same URL; -w prints a
 // newline after the answer so that several answers come out one per line.
-export function curlCommand({ path, accept, body }) {
+export function curlCommand({ path, accept, language, body }) {
   const url = new URL(path, window.location.href).href;
   return [
     'curl -sS',
     shellWord(url),
     `-H ${shellWord('Content-Type: application/json')}`,
     `-H ${shellWord(`Accept: ${accept}`)}`,
+    `-H ${shellWord(`Accept-Language: ${language}`)}`,
     `--data-raw ${shellWord(body)}`,
     `-w ${shellWord('\\n')}`,
   ].join(' ');
@@ -59,7 +63,7 @@ export function csvButton(id, fileName, columns, rows) {
   button.type = 'button';
   button.id = id;
   button.className = 'csv-download';
-  button.textContent = 'Download CSV';
+  button.textContent = t('button.download_csv');
   button.addEventListener('click', () => {
     const header = columns.map(([name, unit]) => csvHeading(name, unit));
     saveFile(fileName, csvText(header, rows), 'text/csv;charset=utf-8;header=present');

@@ -3,6 +3,8 @@
 
 import { fileNameOf, numberLiteral, postJson, RawNumber } from './api.js';
 import { saveFile } from './export.js';
+import { has, t } from './i18n.js';
+import { converts, fromApi, inputUnit, shownUnit, toApi, unitText } from './units.js';
 
 // Element builder: h('p', {class: 'x', 'data-a': 1}, 'text', child, ...). Attributes only: no
 // inline style, no HTML strings (the page runs under a strict Content-Security-Policy).
@@ -43,6 +45,15 @@ export function controls(form) {
   );
 }
 
+// A number typed in the page's units as the API's mm (other units pass as typed).
+function apiNumber(control, literal) {
+  const unit = inputUnit(control);
+  if (!converts(unit)) return new RawNumber(literal);
+  const mm = toApi(Number(literal), unit);
+  // Too large to convert (1e400): sent as typed, so the service says why.
+  return Number.isFinite(mm) ? new RawNumber(String(mm)) : new RawNumber(literal);
+}
+
 function controlValue(control) {
   if (control.tagName === 'SELECT') {
     // A yes/no choice is a JSON boolean.
@@ -56,13 +67,13 @@ function controlValue(control) {
       .filter((t) => t !== '')
       .map((t) => {
         const literal = numberLiteral(t);
-        return literal === null ? t : new RawNumber(literal);
+        return literal === null ? t : apiNumber(control, literal);
       });
   }
   if (control.dataset.type === 'number') {
     const literal = numberLiteral(text);
     // Not a number: sent as the text it is, so the service names the field and says why.
-    return literal === null ? text : new RawNumber(literal);
+    return literal === null ? text : apiNumber(control, literal);
   }
   return text;
 }
@@ -156,10 +167,8 @@ function formError(form, message) {
 export function showFailure(form, answer, label = '') {
   const prefix = label ? `${label}: ` : '';
   if (answer.status === 0) {
-    formError(
-      form,
-      `${prefix}the service could not be reached (${answer.networkError?.message ?? 'network error'})`,
-    );
+    const reason = answer.networkError?.message ?? t('error.network');
+    formError(form, prefix + t('error.unreachable', { reason }));
     return;
   }
   const problem = answer.json;
@@ -207,20 +216,49 @@ export function at(body, pointer) {
   return node;
 }
 
-// The element showing the value at `pointer` of `body`: rounded for display, the full value in
-// data-value, its unit beside it. `source` names the answering endpoint where a section has two.
-// `describe` turns a string value (a code such as "nose_arc") into words for people.
-export function value(body, pointer, unit = '', source = undefined, describe = undefined) {
+// The element showing the value at `pointer` of `body`: in the page's units (units.js), rounded
+// for display, the API's full value in data-value, the unit shown in data-unit and, unless
+// `bare` (a table column names it), beside it. `unit` is the API's unit id (catalogue unit.<id>).
+// `source` names the answering endpoint where a section has two. `describe` turns a string value
+// (a code such as "nose_arc") into words for people.
+export function value(
+  body,
+  pointer,
+  unit = '',
+  source = undefined,
+  describe = undefined,
+  bare = false,
+) {
   const v = at(body, pointer);
-  const shown = typeof v === 'number' ? fmt(v) : (describe?.(v) ?? String(v));
+  const shown = typeof v === 'number' ? fmt(fromApi(v, unit)) : (describe?.(v) ?? String(v));
   const num = h(
     'span',
-    { class: 'num', 'data-result': pointer, 'data-value': String(v), 'data-source': source },
+    {
+      class: 'num',
+      'data-result': pointer,
+      'data-value': String(v),
+      'data-unit': unit ? shownUnit(unit) : undefined,
+      'data-source': source,
+    },
     shown,
   );
-  return unit
-    ? h('span', { class: 'quantity' }, num, '\u00a0', h('span', { class: 'unit' }, unit))
+  return unit && !bare
+    ? h('span', { class: 'quantity' }, num, '\u00a0', h('span', { class: 'unit' }, unitText(unit)))
     : num;
+}
+
+// A program's warnings: each code (data-result) with its sentence in the page's language. The
+// API's own detail is English whatever the language (a 200 answer is the same in every
+// language): it is shown only for a code the catalogue does not know yet.
+export function warningList(body) {
+  const warnings = Array.isArray(body.warnings) ? body.warnings : [];
+  if (!warnings.length) return [];
+  const sentence = (w) => (has(`warning.${w.code}`) ? t(`warning.${w.code}`) : w.detail);
+  return h(
+    'ul',
+    { class: 'warnings' },
+    warnings.map((w, i) => h('li', {}, value(body, `/warnings/${i}/code`), ': ', sentence(w))),
+  );
 }
 
 // A list of "label: value unit" rows. rows = [[labelNodes, pointer, unit, describe?], ...]
@@ -236,13 +274,20 @@ export function valueList(body, rows, source = undefined) {
   );
 }
 
-// Label nodes with a subscript: sym('L', 'vr') -> L<sub>vr</sub>.
+// A paper symbol with a subscript: sym('L', 'vr') -> <var class="sym">L<sub>vr</sub></var>.
+// Symbols are not words: no language changes them.
 export function sym(base, sub = '') {
-  return sub ? [base, h('sub', {}, sub)] : [base];
+  return [h('var', { class: 'sym' }, base, sub ? h('sub', {}, sub) : null)];
+}
+
+// The ISO 3002 / cutting-data symbol shown beside a paper symbol where the two differ
+// (S_z -> f_z), so that a letter means one thing across the page.
+export function iso(base, sub = '') {
+  return [' ', h('var', { class: 'iso' }, base, sub ? h('sub', {}, sub) : null)];
 }
 
 export function noDiagram(what) {
-  return h('p', { class: 'no-diagram' }, `No diagram data: ${what}`);
+  return h('p', { class: 'no-diagram' }, t('result.no_diagram', { what }));
 }
 
 // Asks `path` for the plain-text program of `body` (Accept: text/plain) and saves it under the
@@ -251,12 +296,12 @@ export async function downloadProgram(form, path, body, fallback) {
   try {
     const answer = await postJson(path, body, 'text/plain');
     if (!answer.ok) {
-      showFailure(form, answer, 'Download');
+      showFailure(form, answer, t('result.download'));
       return;
     }
     const name = fileNameOf(answer.headers.get('Content-Disposition'), fallback);
     saveFile(name, answer.text, 'text/plain');
   } catch (error) {
-    showMessage(form, `Download failed: ${error?.message ?? error}`);
+    showMessage(form, t('error.download_failed', { reason: error?.message ?? error }));
   }
 }

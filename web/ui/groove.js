@@ -10,9 +10,12 @@ import {
   noDiagram,
   readBody,
   showFailure,
+  iso,
   sym,
   valueList,
 } from './form.js';
+import { t, tn } from './i18n.js';
+import { csvUnit, fromApi, unitText } from './units.js';
 import { domain, figure, plot, points, s } from './svg.js';
 
 const PATH = '/v1/roughness/groove-wall';
@@ -20,14 +23,11 @@ const CURVE_POINTS = 200;
 // The curve's fields (the answer's curve[] items) and units, for its CSV.
 const CURVE_COLUMNS = [
   ['feed_mm', 'mm'],
-  ['rz_um', '\u00b5m'],
+  ['rz_um', 'um'],
 ];
 
-const BRANCHES = {
-  nose_arc: 'between two nose arcs',
-  nose_arc_and_minor_edge: 'nose arc and minor edge',
-  minor_edge_and_main_edge: 'minor edge and main edge',
-};
+// The branch of the model (the API's code) in words.
+const describeBranch = (code) => t(`branch.${code}`);
 
 export function init() {
   const form = document.getElementById('groove-form');
@@ -38,21 +38,25 @@ export function init() {
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);
-      result.append(h('p', { class: 'placeholder' }, 'No results: see the messages in the form.'));
+      result.append(h('p', { class: 'placeholder' }, t('result.no_results')));
       return;
     }
     const response = answer.json;
     result.append(
-      h('h3', {}, 'Theoretical roughness'),
+      h('h3', {}, t('result.theoretical_roughness')),
       valueList(response, [
-        [['Crest height ', ...sym('Rz', 'p')], '/rz_um', '\u00b5m'],
-        [['Largest feed for the target'], '/max_feed_mm', 'mm'],
-        [['Crest formed by'], '/branch', '', (code) => BRANCHES[code]],
+        [[t('result.crest_height'), ' ', ...sym('Rz', 'p')], '/rz_um', 'um'],
+        [
+          [t('result.largest_feed'), ' ', ...sym('S', 'max'), ...iso('f', 'max')],
+          '/max_feed_mm',
+          'mm',
+        ],
+        [[t('result.crest_formed_by')], '/branch', '', describeBranch],
       ]),
       h(
         'p',
         { class: 'source-note' },
-        'Rz\u209a is a geometric lower bound: measured Rz is larger.',
+        tn('result.rz_lower_bound'),
       ),
     );
     if (Array.isArray(response.curve) && response.curve.length >= 2) {
@@ -61,7 +65,7 @@ export function init() {
         csvButton(
           'groove-curve-csv',
           'groove-wall-rz-curve.csv',
-          CURVE_COLUMNS,
+          CURVE_COLUMNS.map(([key, unit]) => [key, csvUnit(unit)]),
           response.curve.map((point) => CURVE_COLUMNS.map(([key]) => point[key])),
         ),
       );
@@ -69,16 +73,18 @@ export function init() {
       result.append(
         noDiagram(
           answer.optInRefused
-            ? 'this service does not return the Rz(feed) curve yet.'
-            : 'the answer has no curve.',
+            ? t('result.no_curve_yet')
+            : t('result.no_curve'),
         ),
       );
     }
   });
 }
 
-function rzPlot(response, feed, target) {
-  const curve = response.curve.map((p) => [p.feed_mm, p.rz_um]);
+// The feed (x) in the page's units: the curve keeps its shape, its axis reads in mm or inches.
+function rzPlot(response, feedMm, target) {
+  const feed = fromApi(feedMm, 'mm');
+  const curve = response.curve.map((p) => [fromApi(p.feed_mm, 'mm'), p.rz_um]);
   const hasTarget = at(response, '/max_feed_mm') !== undefined && Number.isFinite(target);
   const ys = curve
     .map((p) => p[1])
@@ -87,12 +93,12 @@ function rzPlot(response, feed, target) {
   const xs = curve.map((p) => p[0]).concat([feed]);
   const chart = plot({
     kind: 'rz-vs-feed',
-    title: 'Theoretical crest height Rz against the feed, with the target and the largest feed',
-    xLabel: 'feed S, mm',
+    title: t('diagram.rz_plot_title'),
+    xLabel: t('diagram.feed_axis', { unit: unitText('mm') }),
     yLabel: [
       'Rz',
       s('tspan', { 'baseline-shift': 'sub', 'font-size': '0.75em' }, 'p'),
-      s('tspan', {}, ', \u00b5m'),
+      s('tspan', {}, `, ${unitText('um')}`),
     ],
     xDomain: domain(xs, 0.02, true),
     yDomain: domain(ys, 0.08, true),
@@ -118,10 +124,14 @@ function rzPlot(response, feed, target) {
           x2: area.right,
           y2: y(target),
         }),
-        s('text', { x: area.left + 4, y: y(target), dy: '-0.4em' }, `T = ${fmt(target)} \u00b5m`),
+        s(
+          'text',
+          { x: area.left + 4, y: y(target), dy: '-0.4em' },
+          `T = ${fmt(target)} ${unitText('um')}`,
+        ),
       ),
     );
-    const maxFeed = response.max_feed_mm;
+    const maxFeed = fromApi(response.max_feed_mm, 'mm');
     chart.layer.append(
       s(
         'g',
@@ -136,13 +146,13 @@ function rzPlot(response, feed, target) {
         s(
           'text',
           { x: x(maxFeed), y: area.top, dx: '-0.3em', dy: '1em', 'text-anchor': 'end' },
-          `S max = ${fmt(maxFeed)} mm`,
+          `S max = ${fmt(maxFeed)} ${unitText('mm')}`,
         ),
       ),
     );
     legend.push(
-      { cls: 's-target', label: 'target T' },
-      { cls: 's-max-feed', label: 'largest feed' },
+      { cls: 's-target', label: t('legend.target') },
+      { cls: 's-max-feed', label: t('legend.largest_feed') },
     );
   }
   chart.svg.append(
@@ -152,6 +162,6 @@ function rzPlot(response, feed, target) {
       s('circle', { class: 's-marker', cx: x(feed), cy: y(response.rz_um), r: 5 }),
     ),
   );
-  legend.push({ cls: 's-marker', label: 'this feed', shape: 'dot' });
+  legend.push({ cls: 's-marker', label: t('legend.this_feed'), shape: 'dot' });
   return figure(chart.svg, legend);
 }

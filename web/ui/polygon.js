@@ -10,10 +10,12 @@ import {
   downloadProgram,
   showFailure,
   sym,
-  value,
   valueList,
+  warningList,
 } from './form.js';
 import { Bounds, diagram, figure, mapped, points, s, unitsPerPixel } from './svg.js';
+import { t } from './i18n.js';
+import { fromApi, unitText } from './units.js';
 
 const PATH = '/v1/polygon-hole/gcode';
 
@@ -37,7 +39,7 @@ export function init() {
       delete program.dataset.fileName;
       program.hidden = true;
       result.append(
-        h('p', { class: 'placeholder' }, 'No results: see the messages in the form.'),
+        h('p', { class: 'placeholder' }, t('result.no_results')),
         program,
       );
       return;
@@ -47,7 +49,7 @@ export function init() {
     program.textContent = answer.json.program;
     program.dataset.fileName = answer.json.file_name;
     program.hidden = false;
-    result.append(...programResults(answer, result), h('h3', {}, 'G-code'), program);
+    result.append(...programResults(answer, result), h('h3', {}, t('result.g_code')), program);
   });
 
   download.addEventListener('click', async () => {
@@ -64,32 +66,25 @@ export function init() {
 
 function programResults(answer, container) {
   const body = answer.json;
-  const warnings = Array.isArray(body.warnings) ? body.warnings : [];
   const parts = [
-    h('h3', {}, 'Program and predicted hole'),
+    h('h3', {}, t('result.program_and_hole')),
     valueList(body, [
-      [['Eccentricity e'], '/eccentricity_mm', 'mm'],
-      [['Loop length ', ...sym('L', 'p')], '/loop_length_mm', 'mm'],
-      [['Feed per revolution'], '/feed_per_rev_mm', 'mm/rev'],
-      [['Arc blocks per loop'], '/blocks_per_loop', ''],
-      [['Largest path deviation'], '/max_path_deviation_mm', 'mm'],
-      [['Predicted overcut'], '/predicted_overcut_mm', 'mm'],
-      [['Corner gap g'], '/corner_gap_mm', 'mm'],
-      [['Uncut corner area'], '/uncut_corner_area_mm2', 'mm\u00b2'],
-      [['Block-rate feed limit'], '/max_feed_by_block_rate_mm_per_min', 'mm/min'],
+      [[t('result.eccentricity'), ' ', ...sym('e')], '/eccentricity_mm', 'mm'],
+      [[t('result.loop_length'), ' ', ...sym('L', 'p')], '/loop_length_mm', 'mm'],
+      [[t('result.feed_per_revolution'), ' ', ...sym('f')], '/feed_per_rev_mm', 'mm_per_rev'],
+      [[t('result.arc_blocks_per_loop')], '/blocks_per_loop', ''],
+      [[t('result.largest_path_deviation')], '/max_path_deviation_mm', 'mm'],
+      [[t('result.predicted_overcut')], '/predicted_overcut_mm', 'mm'],
+      [[t('result.corner_gap'), ' ', ...sym('g')], '/corner_gap_mm', 'mm'],
+      [[t('result.uncut_corner_area')], '/uncut_corner_area_mm2', 'mm2'],
+      [
+        [t('result.block_rate_feed_limit'), ' ', ...sym('v', 'f')],
+        '/max_feed_by_block_rate_mm_per_min',
+        'mm_per_min',
+      ],
     ]),
   ];
-  if (warnings.length) {
-    parts.push(
-      h(
-        'ul',
-        { class: 'warnings' },
-        warnings.map((_, i) =>
-          h('li', {}, value(body, `/warnings/${i}/code`), ': ', body.warnings[i].detail),
-        ),
-      ),
-    );
-  }
+  parts.push(warningList(body));
   const geometry = body.geometry;
   if (geometry && Array.isArray(geometry.polygon) && Array.isArray(geometry.predicted_hole)) {
     parts.push(holeDiagram(geometry, container), cornerDiagram(geometry, body));
@@ -97,8 +92,8 @@ function programResults(answer, container) {
     parts.push(
       noDiagram(
         answer.optInRefused
-          ? 'this service does not return the hole geometry yet.'
-          : 'the answer has no geometry.',
+          ? t('result.no_geometry_yet')
+          : t('result.no_geometry'),
       ),
     );
   }
@@ -134,7 +129,7 @@ function holeDiagram(geometry, container) {
   const upp = unitsPerPixel(viewBox[2], container);
   const svg = diagram(
     'polygon-hole',
-    'Polygon hole: the ideal polygon, the tool-axis path, the rotor at a few phases and the predicted hole',
+    t('diagram.hole_title'),
     viewBox,
   );
   svg.append(
@@ -183,24 +178,24 @@ function holeDiagram(geometry, container) {
   return figure(
     svg,
     [
-      { cls: 's-polygon', label: 'ideal polygon' },
-      { cls: 's-predicted-hole', label: 'predicted hole', shape: 'area' },
-      { cls: 's-centre-path', label: 'tool-axis path' },
-      { cls: 's-rotor', label: `rotor (${rotors.length} phases)` },
+      { cls: 's-polygon', label: t('legend.ideal_polygon') },
+      { cls: 's-predicted-hole', label: t('legend.predicted_hole'), shape: 'area' },
+      { cls: 's-centre-path', label: t('legend.tool_axis_path') },
+      { cls: 's-rotor', label: t('legend.rotor', { count: rotors.length }) },
     ],
-    'Program coordinates: hole centre X0 Y0, Y up; the dashed square marks the corner detail.',
+    t('diagram.hole_caption'),
   );
 }
 
 function cornerDiagram(geometry, body) {
   const corner = geometry.corner;
   if (!corner?.vertex || !(corner.view_radius_mm > 0))
-    return noDiagram('the answer has no corner.');
+    return noDiagram(t('result.no_corner'));
   const { vx, vy, radius, half, cx, cy } = cornerWindow(corner);
   const viewBox = [cx - half, cy - half, 2 * half, 2 * half];
   const svg = diagram(
     'polygon-corner',
-    'Corner detail: the ideal polygon corner and the predicted hole',
+    t('diagram.corner_title'),
     viewBox,
   );
   svg.append(
@@ -218,12 +213,15 @@ function cornerDiagram(geometry, body) {
     s(
       'text',
       { x: cx - half, y: cy - half, dx: '0.5em', dy: '1.3em' },
-      `corner gap g = ${fmt(body.corner_gap_mm)} mm`,
+      t('diagram.corner_gap', {
+        value: fmt(fromApi(body.corner_gap_mm, 'mm')),
+        unit: unitText('mm'),
+      }),
     ),
   );
   return figure(svg, [
-    { cls: 's-polygon', label: 'ideal polygon' },
-    { cls: 's-predicted-hole', label: 'predicted hole', shape: 'area' },
+    { cls: 's-polygon', label: t('legend.ideal_polygon') },
+    { cls: 's-predicted-hole', label: t('legend.predicted_hole'), shape: 'area' },
   ]);
 }
 

@@ -3,7 +3,9 @@
 
 import { onCalculate } from './calculation.js';
 import { csvButton } from './export.js';
-import { h, noDiagram, readBody, showFailure, sym, value, valueList } from './form.js';
+import { h, iso, noDiagram, readBody, showFailure, sym, value, valueList } from './form.js';
+import { t, tn } from './i18n.js';
+import { csvUnit, unitText } from './units.js';
 import { domain, figure, plot, points, s } from './svg.js';
 
 const PATH = '/v1/resultant-speeds';
@@ -21,7 +23,7 @@ export function init() {
     result.replaceChildren();
     if (!main.ok) {
       showFailure(form, main);
-      result.append(h('p', { class: 'placeholder' }, 'No results: see the messages in the form.'));
+      result.append(h('p', { class: 'placeholder' }, t('result.no_results')));
       return;
     }
     result.append(...pointResults(main.json));
@@ -35,8 +37,8 @@ export function init() {
       result.append(
         noDiagram(
           up.optInRefused || down.optInRefused
-            ? 'this service does not sample the engagement arc (arc_samples) yet.'
-            : 'the arc could not be sampled.',
+            ? t('result.no_arc_yet')
+            : t('result.no_arc'),
         ),
       );
     }
@@ -48,16 +50,23 @@ const columns = () => [
   ['contact_angle_deg', sym('\u03c1'), 'deg'],
   ['contact_radius_mm', sym('R', '2\u2032'), 'mm'],
   ['contact_polar_angle_deg', sym('\u03c3'), 'deg'],
-  ['tool_speed_m_per_min', sym('v', 'T'), 'm/min'],
-  ['workpiece_speed_m_per_min', sym('v', 'S2'), 'm/min'],
-  ['resultant_feed_mm_per_min', ['|', ...sym('u', 's'), '|'], 'mm/min'],
-  ['resultant_speed_m_per_min', ['|', ...sym('v', 'e'), '|'], 'm/min'],
-  ['resultant_angle_deg', ['angle ', ...sym('v', 'T'), '\u2192', ...sym('v', 'e')], 'deg'],
-  ['sense', ['sense'], ''],
+  ['tool_speed_m_per_min', [...sym('v', 'T'), ...iso('v', 'c')], 'm_per_min'],
+  ['workpiece_speed_m_per_min', sym('v', 'S2'), 'm_per_min'],
+  ['resultant_feed_mm_per_min', ['|', ...sym('u', 's'), '|'], 'mm_per_min'],
+  ['resultant_speed_m_per_min', ['|', ...sym('v', 'e'), '|'], 'm_per_min'],
+  [
+    'resultant_angle_deg',
+    [t('result.angle'), ' ', ...sym('v', 'T'), '\u2192', ...sym('v', 'e')],
+    'deg',
+  ],
+  ['sense', [t('result.sense')], ''],
   ['kinematic_ratio', sym('i', 'k'), ''],
-  ['normal_speed_m_per_min', sym('v', 'N'), 'm/min'],
-  ['along_edge_speed_m_per_min', ['along edge'], 'm/min'],
+  ['normal_speed_m_per_min', sym('v', 'N'), 'm_per_min'],
+  ['along_edge_speed_m_per_min', [t('result.along_edge')], 'm_per_min'],
 ];
+
+// The milling sense at a point (the API's code) in words.
+const describeSense = (code) => t(`milling.${code}`);
 
 function pointResults(body) {
   const list = Array.isArray(body.points) ? body.points : [];
@@ -67,7 +76,7 @@ function pointResults(body) {
     h(
       'caption',
       { class: 'source-note' },
-      'At each contact point (entry +\u03c1e, middle 0, exit \u2212\u03c1e unless listed)',
+      tn('result.at_each_contact_point'),
     ),
     h(
       'thead',
@@ -80,7 +89,7 @@ function pointResults(body) {
             'th',
             { scope: 'col' },
             label,
-            unit ? [h('br'), h('span', { class: 'unit' }, unit)] : null,
+            unit ? [h('br'), h('span', { class: 'unit' }, unitText(unit))] : null,
           ),
         ),
       ),
@@ -92,11 +101,11 @@ function pointResults(body) {
         h(
           'tr',
           {},
-          columns().map(([key]) =>
+          columns().map(([key, , unit]) =>
             h(
               'td',
               { class: key === 'sense' ? 'text' : undefined },
-              value(body, `/points/${i}/${key}`),
+              value(body, `/points/${i}/${key}`, unit, undefined, describeSense, true),
             ),
           ),
         ),
@@ -104,15 +113,19 @@ function pointResults(body) {
     ),
   );
   return [
-    h('h3', {}, 'Engagement arc and contact points'),
+    h('h3', {}, t('result.engagement_arc')),
     valueList(body, [
-      [['Engagement half-angle ', ...sym('\u03c1', 'e')], '/engagement_half_angle_deg', 'deg'],
+      [
+        [t('result.engagement_half_angle'), ' ', ...sym('\u03c1', 'e')],
+        '/engagement_half_angle_deg',
+        'deg',
+      ],
     ]),
     h('div', { class: 'table-wrap' }, table),
     csvButton(
       'speeds-points-csv',
       'resultant-speeds-points.csv',
-      columns().map(([key, , unit]) => [key, unit]),
+      columns().map(([key, , unit]) => [key, csvUnit(unit)]),
       list.map((point) => columns().map(([key]) => point[key])),
     ),
   ];
@@ -127,12 +140,12 @@ function speedPlot(upPoints, downPoints, main) {
   const all = [...up, ...down, ...own];
   const chart = plot({
     kind: 'speed-vs-angle',
-    title: 'Resultant cutting speed |v_e| against the contact angle, up- and down-milling',
-    xLabel: 'contact angle \u03c1, deg',
+    title: t('diagram.speed_plot_title'),
+    xLabel: t('diagram.contact_angle_axis', { unit: unitText('deg') }),
     yLabel: [
       '|v',
       s('tspan', { 'baseline-shift': 'sub', 'font-size': '0.75em' }, 'e'),
-      s('tspan', {}, '|, m/min'),
+      s('tspan', {}, `|, ${unitText('m_per_min')}`),
     ],
     xDomain: domain(
       all.map((p) => p[0]),
@@ -157,10 +170,10 @@ function speedPlot(upPoints, downPoints, main) {
   return figure(
     chart.svg,
     [
-      { cls: 's-curve-up', label: 'up-milling' },
-      { cls: 's-curve-down', label: 'down-milling' },
-      { cls: 's-marker', label: 'requested points', shape: 'dot' },
+      { cls: 's-curve-up', label: t('legend.up_milling') },
+      { cls: 's-curve-down', label: t('legend.down_milling') },
+      { cls: 's-marker', label: t('legend.requested_points'), shape: 'dot' },
     ],
-    'Entry at +\u03c1e (right), exit at \u2212\u03c1e (left); milling sense as at the middle of the arc.',
+    t('diagram.speed_plot_caption'),
   );
 }

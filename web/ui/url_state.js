@@ -8,7 +8,8 @@
 // The value is the text as typed ("1,5" stays "1,5"); an empty value is an empty input. A section
 // in the URL lists every input of its request, so the link keeps its meaning when the page's
 // defaults change; a section not in the URL shows its defaults. Keys without a dot are page-wide
-// settings (reserved: lang, units); the page keeps them, and ignores keys it does not know.
+// settings (lang, units: i18n.js, units.js); the page keeps them, and ignores keys it does
+// not know.
 
 import { controls } from './form.js';
 
@@ -36,8 +37,12 @@ export function differsFromDefaults(form) {
   return controls(form).some((c) => c.value !== defaultValue(c));
 }
 
-function appendSection(params, sectionId, form) {
-  for (const [name, text] of fieldValues(form)) params.append(keyOf(sectionId, name), text);
+// `text` gives the text of a control to write (the value as typed, or as converted when the
+// units change).
+function appendSection(params, sectionId, form, text = (control) => control.value) {
+  for (const control of controls(form)) {
+    params.append(keyOf(sectionId, control.name), text(control));
+  }
 }
 
 // The page-wide settings of the current URL, to carry into every URL the page writes.
@@ -71,6 +76,20 @@ export function pageUrl(sections, sectionId) {
     if (differsFromDefaults(form)) appendSection(params, id, form);
   }
   return urlWith(params, sectionId);
+}
+
+// The URL of the whole page with page-wide settings changed (settings = {lang: 'ru'}; null drops
+// a setting), the inputs written by `text(control)`, at the same place in the page.
+export function pageUrlWith(sections, settings, text) {
+  const params = pageSettings();
+  for (const [key, value] of Object.entries(settings)) {
+    params.delete(key);
+    if (value !== null) params.append(key, value);
+  }
+  for (const { id, form } of sections) {
+    if (differsFromDefaults(form)) appendSection(params, id, form, text);
+  }
+  return urlWith(params, window.location.hash.slice(1));
 }
 
 // Sets the form to the section's inputs in `search` (a URL's query), its defaults where the URL
