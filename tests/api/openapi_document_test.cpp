@@ -261,15 +261,15 @@ TEST(OpenApiDocument, RejectsUnsupportedSchemaKeywordsAndMissingFiles) {
   {
     std::ofstream out(path);
     out << "openapi: 3.1.0\ninfo: {title: t, version: '1'}\npaths: {}\n"
-           "components:\n  schemas:\n    A:\n      type: array\n      uniqueItems: true\n"
+           "components:\n  schemas:\n    A:\n      type: array\n      uniqueItem: true\n"
            "    B:\n      $ref: '#/components/schemas/Missing'\n";
   }
   try {
     OpenApiContract::load(path);
-    ADD_FAILURE() << "load accepted an unsupported keyword and a dangling $ref";
+    ADD_FAILURE() << "load accepted an unknown keyword and a dangling $ref";
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("uniqueItems"), std::string::npos) << what;
+    EXPECT_NE(what.find("uniqueItem"), std::string::npos) << what;  // a typo: no such keyword
     EXPECT_NE(what.find("Missing"), std::string::npos) << what;
   }
 }

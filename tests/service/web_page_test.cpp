@@ -21,6 +21,7 @@
 
 #include "service/build_info.h"
 #include "service/web_assets.h"
+#include "support/exchange_log.h"
 #include "support/service_process.h"
 
 #ifndef CUTCALC_WEB_DIR
@@ -40,6 +41,7 @@ std::unique_ptr<httplib::Client> client() {
   auto c = std::make_unique<httplib::Client>("127.0.0.1", service().port());
   c->set_connection_timeout(5);
   c->set_read_timeout(10);
+  log_exchanges(*c);
   return c;
 }
 

@@ -1,23 +1,21 @@
 #pragma once
-// Test support: checks real requests and responses against openapi.yaml.
+// Test support: checks values against openapi.yaml, synchronously, for tests that assert what the
+// contract accepts or rejects. The checking is done by the repository's one JSON Schema validator,
+// tools/contract/check.mjs (Ajv, JSON Schema 2020-12, strict), run as a child process (Node.js)
+// for the life of the OpenApiContract; contract.mjs says what an answer is matched against
+// (path templates, the x-cutcalc-unmatched-route 404 and the 405 fallbacks, media types, headers).
+// The answers of every test's HTTP exchanges are checked by the same code after the tests
+// (support/exchange_log.h), so tests need not call check_response on them.
 //
-// OpenApiContract loads the OpenAPI 3.1 document (YAML, through yaml-cpp) into JSON and validates
-// bodies with a JSON Schema subset that covers what openapi.yaml uses: boolean schemas, $ref
-// (local,
-// "#/..."), type (string or array; "integer" = a number without a fractional part), enum, const,
-// properties, required, additionalProperties (false or a schema), dependentRequired,
-// dependentSchemas, items, minItems, maxItems, minLength, maxLength, pattern (ECMAScript,
-// unanchored, as JSON Schema says), minimum, maximum, exclusiveMinimum, exclusiveMaximum (3.1
-// numeric form), allOf, anyOf, oneOf (exactly one), not. Annotations (title, description, default,
-// example(s), format, discriminator, ...) are ignored. load() throws if any schema in the document
-// uses another keyword, so a schema can never pass a check because the checker did not understand
-// it.
+// document() is the YAML read here with yaml-cpp (scalars typed by the YAML 1.2 core schema, as
+// JSON numbers keep their integer/float kind), for tests of the document's shape.
 //
-// Every violation is one string that starts with the JSON Pointer of the offending value, e.g.
-//   at "/start/x_mm": expected type number, got string
+// Every violation is one string; those about a value start with its JSON Pointer, e.g.
+//   at "/start/x_mm": must be number (...)
 // An empty vector means the value conforms.
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,20 +25,16 @@ namespace cutcalc::test_support {
 
 class OpenApiContract {
  public:
-  // Reads and parses the YAML document; throws std::runtime_error on I/O or parse errors, on an
-  // unsupported schema keyword and on a $ref that does not resolve.
-  static OpenApiContract load(const std::string& path);
+  enum class Compile { every_schema, when_used };
 
-  // Violations of the response schema for (method, path template, status, Content-Type). The
-  // method is case-insensitive ("POST", "get"); the path is a template exactly as under `paths`
-  // ("/v1/entry-length"). Media type parameters in content_type are compared with the documented
-  // key: the same parameters with equal values (charset case-insensitively), none missing or extra.
-  // An undocumented path, operation, status or media type is itself a violation, except:
-  // an undocumented path with status 404 is checked against the document's
-  // `x-cutcalc-unmatched-route` response, and an undocumented method on a documented path with
-  // status 405 against the path's documented 405 response.
-  // For a response documented without content, any body other than null is a violation; the body
-  // of a HEAD response (absent) is not validated, its Content-Type is.
+  // Reads and parses the YAML document and starts the checker, which compiles every schema in it
+  // (when_used: each schema when a check first needs it, in half the start-up time); throws
+  // std::runtime_error on I/O or parse errors, and, for a schema compiled, on a keyword Ajv does
+  // not know and on a $ref that does not resolve.
+  static OpenApiContract load(const std::string& path, Compile compile = Compile::every_schema);
+
+  // Violations of an answer (method, path, status, Content-Type, body; a text body as a JSON
+  // string, no body as null), matched as tools/contract/contract.mjs says.
   std::vector<std::string> check_response(const std::string& method, const std::string& path,
                                           int status, const std::string& content_type,
                                           const nlohmann::json& body) const;
@@ -49,9 +43,7 @@ class OpenApiContract {
   std::vector<std::string> check_request(const std::string& method, const std::string& path,
                                          const nlohmann::json& body) const;
 
-  // Violations of the documented response headers: every header marked `required` must be present
-  // and every documented header that is present must match its schema (as a string). Header names
-  // are compared case-insensitively; the same 404/405 fallbacks as check_response apply.
+  // Violations of the documented response headers (required ones present, present ones valid).
   std::vector<std::string> check_response_headers(
       const std::string& method, const std::string& path, int status,
       const std::map<std::string, std::string>& headers) const;
@@ -65,13 +57,11 @@ class OpenApiContract {
   nlohmann::json document() const;
 
  private:
-  explicit OpenApiContract(nlohmann::json document);
-
-  // The response object (with $ref resolved) for the request, or nullptr with a violation.
-  const nlohmann::json* find_response(const std::string& method, const std::string& path,
-                                      int status, std::vector<std::string>& violations) const;
+  class Checker;
+  OpenApiContract(nlohmann::json document, std::shared_ptr<Checker> checker);
 
   nlohmann::json document_;
+  std::shared_ptr<Checker> checker_;
 };
 
 }  // namespace cutcalc::test_support

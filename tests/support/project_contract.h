@@ -16,8 +16,8 @@ const OpenApiContract& project_contract();
 
 namespace cutcalc::testing {
 
-// POSTs `request` to the test server and expects a 200 whose answer matches openapi.yaml (a gtest
-// failure per violation).
+// POSTs `request` to the test server and expects a 200 (its answer is checked against openapi.yaml
+// with every other logged exchange, support/exchange_log.h).
 JsonReply post_ok(const std::string& path, const nlohmann::json& request);
 
 }  // namespace cutcalc::testing

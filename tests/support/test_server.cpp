@@ -3,6 +3,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "support/exchange_log.h"
+
 namespace cutcalc::testing {
 
 TestServer::TestServer(std::vector<std::string> cors_origins) {
@@ -29,6 +31,7 @@ std::unique_ptr<httplib::Client> TestServer::client() const {
   client->set_connection_timeout(5);
   client->set_read_timeout(10);
   client->set_write_timeout(10);
+  log_exchanges(*client);
   return client;
 }
 

@@ -23,7 +23,8 @@ class TestServer {
 
   [[nodiscard]] int port() const { return port_; }
   [[nodiscard]] const service::HttpApp& app() const { return *app_; }
-  // A fresh client for this server (clients are not thread-safe; use one per thread).
+  // A fresh client for this server (clients are not thread-safe; use one per thread), its
+  // exchanges logged for the contract check (support/exchange_log.h).
   [[nodiscard]] std::unique_ptr<httplib::Client> client() const;
 
   // The one server of this test process, started on first use.
