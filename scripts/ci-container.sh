@@ -67,6 +67,10 @@ if ((${#missing[@]})); then
     || { apt-get update && apt-get install -y --no-install-recommends "${missing[@]}"; }
 fi
 py=/usr/bin/python3
+# The replayer is tools/contract's (Node.js, its locked packages).
+command -v node >/dev/null 2>&1 || apt-get install -y --no-install-recommends nodejs npm
+[[ -f tools/contract/node_modules/.package-lock.json ]] \
+  || (cd tools/contract && npm ci --no-audit --no-fund --loglevel=error)
 t_deps=$(now)
 
 work=$(mktemp -d /var/tmp/cutcalc-container.XXXXXX)
@@ -201,7 +205,8 @@ if [[ "$commit" != unknown ]]; then
   grep -q "\"commit\":\"${commit}\"" <<<"$version" || fail "/version does not name ${commit}: ${version}"
 fi
 
-"$py" scripts/container/replay.py --base-url "$base" --reference-dir "$ref_dir" | tee "$work/replay.log" \
+# The one reference replayer (values, warnings, pointers, program facts, openapi.yaml).
+node tools/contract/replay.mjs --base-url "$base" --reference-dir "$ref_dir" | tee "$work/replay.log" \
   || fail "reference cases (see above)"
 replay_line=$(tail -n 1 "$work/replay.log")
 

@@ -53,11 +53,6 @@ void compare_at(const nlohmann::json& expected, const nlohmann::json& actual,
   }
 }
 
-bool ends_with(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 }  // namespace
 
 std::vector<std::string> compare_subset(const nlohmann::json& expected,
@@ -66,14 +61,6 @@ std::vector<std::string> compare_subset(const nlohmann::json& expected,
   std::vector<std::string> mismatches;
   compare_at(expected, actual, "", "", tolerance, mismatches);
   return mismatches;
-}
-
-ToleranceFn entry_file_tolerance(const nlohmann::json& tolerance) {
-  const double abs_mm = tolerance.at("abs_mm").get<double>();
-  const double abs_min = tolerance.at("abs_min").get<double>();
-  return [abs_mm, abs_min](const std::string& key, double /*want*/) {
-    return ends_with(key, "_time_min") || key == "main_time_min" ? abs_min : abs_mm;
-  };
 }
 
 bool problem_names_pointer(const nlohmann::json& problem, const std::string& pointer) {

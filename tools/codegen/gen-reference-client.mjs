@@ -13,8 +13,8 @@
 //     Every 422 case is sent (tsc still emits JavaScript for the suppressed lines) and must be
 //     answered 422 application/problem+json with errors[] naming expect.pointer.
 // Everything comes from openapi.yaml and the reference files at run time: each file's `endpoint`
-// (as tools/contract/replay.mjs and tests/support/reference_replay.cpp read it), its cases, its
-// tolerance numbers and its `compare` text. Nothing here is per case.
+// (as tools/contract/replay.mjs reads it), its cases, its tolerance numbers and its `compare`
+// text. Nothing here is per case.
 //
 // Usage: node gen-reference-client.mjs --openapi FILE --reference DIR --out DIR
 // Writes DIR/reference-client.ts, DIR/reference-checks.ts (copied), DIR/tsconfig.json and

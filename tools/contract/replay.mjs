@@ -1,9 +1,24 @@
 #!/usr/bin/env node
-// Contract replay: sends every reference case (shared/reference/*.json), the operations
-// endpoints and a list of bad-input requests through Prism's validating proxy in front of a
-// running cutcalc, and fails when any response, success or problem, does not match openapi.yaml.
+// The reference replayer: sends every reference case (shared/reference/*.json), the operations
+// endpoints and a list of bad-input requests to a cutcalc, checks each answer against the
+// reference (status; numbers within the file's tolerance, strings exactly, lists element-wise,
+// objects recursively; expect.max / expect.min bounds; warning codes as a multiset; the problem's
+// errors[] naming expect.pointer, as application/problem+json; the program facts of
+// expect.program: loops, layers, z_min, g95_flat_F, g94_F, last_C) and every answer, success or
+// problem, against openapi.yaml (contract.mjs: Ajv, JSON Schema 2020-12; status, media type,
+// headers, body). rs274 acceptance of the programs (expect.program.rs274) is tests/gcode's.
 //
-// Two Prism proxies in front of the same cutcalc (both `prism proxy openapi.yaml <cutcalc> --errors`):
+// Where cutcalc is:
+//   --start BIN          starts BIN on a free loopback port (ctest: the build's own binary)
+//   --base-url URL       a running cutcalc (ci-container.sh: the container)
+//   --prism              through Prism (ci-contract.sh), from PRISM_STRICT_URL, PRISM_RELAXED_URL
+//                        and CUTCALC_URL; see below
+// Options: --reference-dir DIR (default <repo>/../shared/reference, or CUTCALC_REFERENCE_DIR),
+// --openapi FILE (default <repo>/openapi.yaml, or OPENAPI_FILE), --per-file N (the first N cases
+// of each file, always with a non-200 case when the file has one; 0 = all), --concurrency N
+// (default 4, or REPLAY_CONCURRENCY), --verbose (or REPLAY_VERBOSE=1: every exchange).
+//
+// Through Prism: two proxies in front of the same cutcalc (both `prism proxy openapi.yaml <cutcalc> --errors`):
 //   PRISM_STRICT_URL   request validation on (Prism's default);
 //   PRISM_RELAXED_URL  `--validate-request=false`.
 // How Prism 5 (--errors) signals what it found:
@@ -28,89 +43,225 @@
 // (@stoplight/prism-http validateOutput on the operations Prism builds from the same document).
 // One case (20000 nesting levels) goes directly only: it crashes Prism 5.14 (RangeError in its logger).
 // Prism 5 validates OpenAPI 3.1 schemas as draft-07 and ignores newer keywords (dependentRequired),
-// so every body cutcalc sent is also validated as JSON Schema 2020-12 with Ajv.
-// Any response violation, error or warning, is a failure; so is a status other than the one the
-// reference case or the contract's description states, and a 200 reference request that Prism
-// rejects. Exit status: 0 clean, 1 failures, 2 setup error.
-//
-// Environment: PRISM_STRICT_URL, PRISM_RELAXED_URL, CUTCALC_URL (required); OPENAPI_FILE
-// (default <repo>/openapi.yaml; must be the document the proxies serve); CUTCALC_REFERENCE_DIR
-// (default <repo>/../shared/reference, relative to the repository root); REPLAY_CONCURRENCY
-// (requests in flight, default 4); REPLAY_VERBOSE=1 prints every exchange.
+// hence contract.mjs on every answer in this mode too.
+// Any violation, error or warning, is a failure; so is a status other than the one the reference
+// case or the contract's description states, and a 200 reference request that Prism rejects.
+// Exit status: 0 clean, 1 failures, 2 setup error.
+import { spawn } from 'node:child_process';
 import { readFileSync, readdirSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { parseArgs } from 'node:util';
+import { Contract, isJsonMediaType } from './contract.mjs';
 
 const require = createRequire(import.meta.url);
-const { getHttpOperationsFromSpec } = require('@stoplight/prism-http');
-const { validateOutput } = require('@stoplight/prism-http/dist/validator');
-const Ajv2020 = require('ajv/dist/2020').default;
-const addFormats = require('ajv-formats').default;
-
 const here = path.dirname(fileURLToPath(import.meta.url));
 const repo = path.resolve(here, '..', '..');
+const { values: opt } = parseArgs({
+  options: {
+    start: { type: 'string' }, 'base-url': { type: 'string' }, prism: { type: 'boolean' },
+    'reference-dir': { type: 'string' }, openapi: { type: 'string' }, 'per-file': { type: 'string' },
+    concurrency: { type: 'string' }, verbose: { type: 'boolean' },
+  },
+});
+const setupError = message => {
+  console.error(`replay: ${message}`);
+  process.exit(2);
+};
 const env = (name, fallback) => {
   const value = process.env[name];
   if (value !== undefined && value !== '') return value;
   if (fallback !== undefined) return fallback;
-  console.error(`replay: ${name} is not set`);
-  process.exit(2);
+  return setupError(`${name} is not set`);
 };
-const STRICT = env('PRISM_STRICT_URL').replace(/\/$/, '');
-const RELAXED = env('PRISM_RELAXED_URL').replace(/\/$/, '');
-const DIRECT = env('CUTCALC_URL').replace(/\/$/, '');
-const OPENAPI_FILE = path.resolve(env('OPENAPI_FILE', path.join(repo, 'openapi.yaml')));
-const REFERENCE_DIR = path.resolve(repo, env('CUTCALC_REFERENCE_DIR', path.join('..', 'shared', 'reference')));
-const VERBOSE = process.env.REPLAY_VERBOSE === '1';
+const MODE = opt.prism ? 'prism' : opt.start ? 'start' : opt['base-url'] ? 'direct' : setupError('give --start BIN, --base-url URL or --prism');
+const OPENAPI_FILE = path.resolve(opt.openapi ?? env('OPENAPI_FILE', path.join(repo, 'openapi.yaml')));
+const REFERENCE_DIR = path.resolve(repo, opt['reference-dir'] ?? env('CUTCALC_REFERENCE_DIR', path.join('..', 'shared', 'reference')));
+const PER_FILE = Number(opt['per-file'] ?? 0);
+const VERBOSE = opt.verbose || process.env.REPLAY_VERBOSE === '1';
 const TIMEOUT_MS = 20000;
-const CONCURRENCY = Math.max(1, Number(process.env.REPLAY_CONCURRENCY) || 4);
+const CONCURRENCY = Math.max(1, Number(opt.concurrency ?? process.env.REPLAY_CONCURRENCY) || 4);
 const PRISM_ERROR = 'https://stoplight.io/prism/errors#';
+let STRICT, RELAXED, DIRECT;
+const contract = new Contract(OPENAPI_FILE);
 
 // ------------------------------------------------------------------ cases
 // The calculation endpoints and which of them also answer a plain-text program, from the reference
 // files' endpoints and openapi.yaml's text/plain 200 answers: a new endpoint needs no entry here.
 const TEXT_FORM_PATHS = new Set(
-  [...readFileSync(OPENAPI_FILE, 'utf8').matchAll(/^  (\/v1\/[^:]+):\n(?:(?!^  \/).*\n)*?            text\/plain/gm)]
-    .map(m => m[1]),
+  Object.keys(contract.document.paths).filter(t =>
+    Object.keys(contract.findResponse('POST', t, 200).response?.content ?? {}).some(k => k.startsWith('text/plain'))),
 );
+
+// The first N cases of a file, always with a non-200 case when the file has one (--per-file).
+function pick(cases) {
+  if (PER_FILE <= 0 || cases.length <= PER_FILE) return cases;
+  const chosen = cases.slice(0, PER_FILE);
+  if (!chosen.some(c => c.expect.status !== 200)) {
+    const bad = cases.find(c => c.expect.status !== 200);
+    if (bad) chosen[chosen.length - 1] = bad;
+  }
+  return chosen;
+}
+
+// The file's tolerance rule (its "compare" text and the case's tolerance object): the allowed
+// |got - want| for a number at `key` (the last object key on its path).
+function toleranceRule(doc, tol = {}) {
+  if ('abs_mm' in tol) return key => (key.endsWith('_time_min') || key === 'main_time_min' ? tol.abs_min : tol.abs_mm);
+  if ('abs_min' in tol) return (key, want) => Math.max(tol.abs_min, (tol.rel ?? 0) * Math.abs(want));
+  const abs = tol.abs ?? 0;
+  const rel = tol.rel ?? 0;
+  if ((doc.compare ?? '').includes('tolerance.abs + tolerance.rel')) return (key, want) => abs + rel * Math.abs(want);
+  return (key, want) => Math.max(abs, rel * Math.abs(want));
+}
 
 function referenceCases() {
   let files;
   try {
     files = readdirSync(REFERENCE_DIR).filter(f => f.endsWith('.json')).sort();
   } catch (e) {
-    console.error(`replay: cannot read reference directory ${REFERENCE_DIR}: ${e.message}`);
-    process.exit(2);
+    setupError(`cannot read reference directory ${REFERENCE_DIR}: ${e.message}`);
   }
+  if (files.length === 0) setupError(`no reference files in ${REFERENCE_DIR}`);
   const cases = [];
   const firstValid = {};
   for (const file of files) {
     const doc = JSON.parse(readFileSync(path.join(REFERENCE_DIR, file), 'utf8'));
+    const chosen = pick(doc.cases ?? []);
+    if (chosen.length === 0) setupError(`${file} has no cases`);
     for (const c of doc.cases) {
+      if (c.expect.status === 200) firstValid[doc.endpoint] ??= c.request;
+    }
+    for (const c of chosen) {
       const id = `${file}:${c.id}`;
       const body = JSON.stringify(c.request);
-      cases.push({ id, kind: 'reference', method: 'POST', path: doc.endpoint, body, expect: [c.expect.status] });
-      if (c.expect.status === 200) {
-        firstValid[doc.endpoint] ??= c.request;
-        if (TEXT_FORM_PATHS.has(doc.endpoint)) {
-          cases.push({
-            id: `${id} (Accept: text/plain)`, kind: 'reference', method: 'POST', path: doc.endpoint, body,
-            accept: 'text/plain', expect: [200],
-          });
-        }
+      cases.push({
+        id, kind: 'reference', method: 'POST', path: doc.endpoint, body, expect: [c.expect.status],
+        reference: { expect: c.expect, request: c.request, tolerance: toleranceRule(doc, c.tolerance) },
+      });
+      if (c.expect.status === 200 && TEXT_FORM_PATHS.has(doc.endpoint)) {
+        cases.push({
+          id: `${id} (Accept: text/plain)`, kind: 'reference', method: 'POST', path: doc.endpoint, body,
+          accept: 'text/plain', expect: [200],
+        });
       }
     }
   }
   return { files, cases, firstValid };
 }
 
+// ------------------------------------------------------------------ reference checks
+function compareSubset(want, got, tolerance, where, key, out) {
+  if (typeof want === 'number') {
+    if (typeof got !== 'number') out.push(`${where}: expected a number ${want}, got ${JSON.stringify(got)}`);
+    else {
+      const allowed = tolerance(key, want);
+      if (!(Math.abs(got - want) <= allowed)) out.push(`${where}: expected ${want} +- ${allowed}, got ${got} (off by ${Math.abs(got - want)})`);
+    }
+  } else if (Array.isArray(want)) {
+    if (!Array.isArray(got) || got.length !== want.length) out.push(`${where}: expected a list of ${want.length}, got ${JSON.stringify(got)?.slice(0, 200)}`);
+    else want.forEach((w, i) => compareSubset(w, got[i], tolerance, `${where}/${i}`, key, out));
+  } else if (want !== null && typeof want === 'object') {
+    if (got === null || typeof got !== 'object' || Array.isArray(got)) out.push(`${where}: expected an object, got ${JSON.stringify(got)?.slice(0, 200)}`);
+    else {
+      for (const [k, w] of Object.entries(want)) {
+        if (!(k in got)) out.push(`${where}/${k}: missing`);
+        else compareSubset(w, got[k], tolerance, `${where}/${k}`, k, out);
+      }
+    }
+  } else if (want !== got) out.push(`${where}: expected ${JSON.stringify(want)}, got ${JSON.stringify(got)}`);
+}
+
+// The value of word `letter` in a block ("X-1.2345" -> "-1.2345"), or "" when absent.
+function word(block, letter) {
+  const m = block.match(new RegExp(`(?:^|\\s)${letter}(-?[0-9]+\\.[0-9]+)`));
+  return m ? m[1] : '';
+}
+
+// Facts of a polygon program: G2/G3 blocks, Z after each loop, the deepest Z word, the G95 F
+// words, the last G94 F word, the last C word of an arc.
+function programFacts(program, blocksPerLoop) {
+  const facts = { arcBlocks: 0, loopEndZ: [], deepestZ: '', g95F: new Set(), g94F: '', lastC: '' };
+  let z = 0;
+  let deepest = 0;
+  for (const line of program.split('\n')) {
+    if (line === '' || line[0] === '(' || line[0] === '%') continue;
+    const zWord = word(line, 'Z');
+    if (zWord !== '') {
+      z = Number(zWord);
+      if (z < deepest) [deepest, facts.deepestZ] = [z, zWord];
+    }
+    if (line.startsWith('G2 ') || line.startsWith('G3 ')) {
+      facts.arcBlocks++;
+      if (blocksPerLoop > 0 && facts.arcBlocks % blocksPerLoop === 0) facts.loopEndZ.push(z);
+      const c = word(line, 'C');
+      if (c !== '') facts.lastC = c;
+    }
+    if (line.includes('G95') && word(line, 'F') !== '') facts.g95F.add(word(line, 'F'));
+    if (line.includes('G94') && word(line, 'F') !== '') facts.g94F = word(line, 'F');
+  }
+  return facts;
+}
+
+function checkProgram(checks, body, request, out) {
+  if (typeof body.program !== 'string') return out.push('/program: missing');
+  const perLoop = body.blocks_per_loop;
+  const facts = programFacts(body.program, Number.isInteger(perLoop) ? perLoop : 0);
+  if ('loops' in checks) {
+    if (!(perLoop > 0) || facts.arcBlocks % perLoop !== 0 || facts.arcBlocks / perLoop !== checks.loops) {
+      out.push(`program: ${facts.arcBlocks} G2/G3 blocks, want ${checks.loops} loops of ${perLoop}`);
+    }
+  }
+  if ('layers' in checks) {
+    // The loops end at Z = -k depth / n, k = 1..n, and at nothing else.
+    const levels = [...new Set(facts.loopEndZ.map(z => Math.round((-z / request.depth_mm) * checks.layers * 1000)))].sort((a, b) => a - b);
+    const want = Array.from({ length: checks.layers }, (_, k) => (k + 1) * 1000);
+    if (JSON.stringify(levels) !== JSON.stringify(want)) out.push(`program: loops end at levels ${levels}, want ${want} (x1000 of depth/layers)`);
+  }
+  if ('z_min' in checks && facts.deepestZ !== checks.z_min) out.push(`program: deepest Z ${facts.deepestZ}, want ${checks.z_min}`);
+  if ('g95_flat_F' in checks && !facts.g95F.has(checks.g95_flat_F)) out.push(`program: G95 F words ${[...facts.g95F]}, want ${checks.g95_flat_F}`);
+  if ('g94_F' in checks && facts.g94F !== checks.g94_F) out.push(`program: G94 F ${facts.g94F}, want ${checks.g94_F}`);
+  if ('last_C' in checks && facts.lastC !== checks.last_C) out.push(`program: last C ${facts.lastC}, want ${checks.last_C}`);
+  return out;
+}
+
+// Mismatches of an answer with its reference case (status checked by the caller).
+function referenceMismatches(c, r) {
+  const { expect, tolerance, request } = c.reference;
+  const out = [];
+  if (r.status !== expect.status) return out;
+  const body = r.json;
+  if (body === undefined) return [`the answer is not JSON: ${r.text.slice(0, 200)}`];
+  if (r.status === 200) {
+    if (r.contentType.split(';')[0].trim() !== 'application/json') out.push(`Content-Type ${r.contentType}, want application/json`);
+    if (expect.body) compareSubset(expect.body, body, tolerance, '', '', out);
+    for (const [k, bound] of Object.entries(expect.max ?? {})) {
+      if (!(typeof body[k] === 'number' && body[k] <= bound)) out.push(`/${k}: ${body[k]}, want <= ${bound}`);
+    }
+    for (const [k, bound] of Object.entries(expect.min ?? {})) {
+      if (!(typeof body[k] === 'number' && body[k] >= bound)) out.push(`/${k}: ${body[k]}, want >= ${bound}`);
+    }
+    if (expect.warning_codes) {
+      const got = (body.warnings ?? []).map(w => w.code).sort();
+      const want = [...expect.warning_codes].sort();
+      if (JSON.stringify(got) !== JSON.stringify(want)) out.push(`warning codes ${JSON.stringify(got)}, want ${JSON.stringify(want)}`);
+    }
+    if (expect.program) checkProgram(expect.program, body, request, out);
+  } else if ('pointer' in expect) {
+    if (r.contentType.split(';')[0].trim() !== 'application/problem+json') out.push(`Content-Type ${r.contentType}, want application/problem+json`);
+    const pointers = (body.errors ?? []).map(e => e?.pointer);
+    if (!pointers.includes(expect.pointer)) out.push(`errors[] pointers ${JSON.stringify(pointers)}, want "${expect.pointer}"`);
+  }
+  return out;
+}
 
 // Top-level fields of a valid request that the contract requires to be positive sizes: numbers
 // ending in _mm whose request schema has minimum > 0 or exclusiveMinimum >= 0.
 function sizeFields(p, request) {
-  const op = findOperation('POST', p);
-  const props = op?.request?.body?.contents?.[0]?.schema?.properties ?? {};
+  const esc = t => t.replace(/~/g, '~0').replace(/\//g, '~1');
+  const schema = contract.at(`/paths/${esc(p)}/post/requestBody/content/application~1json/schema`);
+  const props = (schema.value?.$ref ? contract.at(schema.value.$ref.slice(1)).value : schema.value)?.properties ?? {};
   return Object.entries(request)
     .filter(([k, v]) => typeof v === 'number' && /_mm$/.test(k))
     .filter(([k]) => {
@@ -173,9 +324,11 @@ function operationsCases() {
     id: `ops:GET ${p}`, kind: 'operations', method: 'GET', path: p, expect: [200],
   }));
   // Every documented HEAD and OPTIONS operation (on a path without parameters).
-  for (const o of operations.filter(o => (o.method === 'head' || o.method === 'options') && !o.path.includes('{'))) {
-    const method = o.method.toUpperCase();
-    cases.push({ id: `ops:${method} ${o.path}`, kind: 'operations', method, path: o.path, expect: [method === 'HEAD' ? 200 : 204] });
+  for (const [p, item] of Object.entries(contract.document.paths)) {
+    if (p.includes('{')) continue;
+    for (const method of ['HEAD', 'OPTIONS']) {
+      if (item[method.toLowerCase()]) cases.push({ id: `ops:${method} ${p}`, kind: 'operations', method, path: p, expect: [method === 'HEAD' ? 200 : 204] });
+    }
   }
   return cases;
 }
@@ -234,7 +387,7 @@ function classify(r) {
 }
 
 // ------------------------------------------------------------------ validation outside the proxy
-let operations;
+let operations; // Prism's operations (prism mode only)
 
 function findOperation(method, p) {
   const m = method.toLowerCase();
@@ -242,7 +395,7 @@ function findOperation(method, p) {
 }
 
 function bodyForValidation(c, r) {
-  if (/^application\/([a-z0-9.+-]*\+)?json\b/i.test(r.contentType) && r.status !== 204 && c.method !== 'HEAD') {
+  if (isJsonMediaType(r.contentType) && r.status !== 204 && c.method !== 'HEAD') {
     return r.json === undefined ? { error: `response body is not JSON: ${r.text.slice(0, 200)}` } : { body: r.json };
   }
   return { body: r.text };
@@ -252,6 +405,7 @@ const severityName = s => (s === 0 ? 'Error' : s === 1 ? 'Warning' : s === 2 ? '
 
 // Prism's own response validator (the code the proxy runs), for answers taken directly from cutcalc.
 function validateWithPrism(c, r) {
+  const { validateOutput } = require('@stoplight/prism-http/dist/validator');
   const op = findOperation(c.method, c.path);
   if (!op) return [{ message: `no operation in the document for ${c.path}` }];
   const b = bodyForValidation(c, r);
@@ -263,42 +417,22 @@ function validateWithPrism(c, r) {
   }));
 }
 
-// Prism 5 validates OpenAPI 3.1 schemas as JSON Schema draft-07 and ignores 2019-09/2020-12
-// keywords (the contract uses dependentRequired). Every body cutcalc sent is therefore also
-// validated against its response schema as JSON Schema 2020-12, the dialect of OpenAPI 3.1.
-const ajv = new Ajv2020({ strict: false, allErrors: true, validateFormats: true });
-addFormats(ajv);
-const compiled = new WeakMap();
-
-function schemaFor(c, r) {
-  const op = findOperation(c.method, c.path);
-  const response = op?.responses?.find(x => x.code === String(r.status));
-  if (!response?.contents?.length) return undefined;
-  const type = r.contentType.split(';')[0].trim().toLowerCase();
-  const content = response.contents.find(x => x.mediaType.split(';')[0].trim().toLowerCase() === type);
-  return content?.schema; // a missing status or media type is reported by Prism itself
-}
-
-function validate2020(c, r) {
-  const schema = schemaFor(c, r);
-  if (!schema) return [];
+// contract.mjs on cutcalc's answer: status, headers, media type, body (JSON Schema 2020-12).
+function validateContract(c, r) {
   const b = bodyForValidation(c, r);
   if (b.error) return [{ location: ['response', 'body'], message: b.error }];
-  let validate = compiled.get(schema);
-  if (!validate) {
-    const { $schema, ...rest } = schema; // Prism labels it draft-07; it is 2020-12
-    validate = ajv.compile(rest);
-    compiled.set(schema, validate);
-  }
-  if (validate(b.body)) return [];
-  return validate.errors.map(e => ({
-    location: ['response', 'body', ...e.instancePath.split('/').filter(Boolean)], severity: 'Error',
-    code: `2020-12 ${e.keyword}`, message: `${e.instancePath || '(body)'} ${e.message}${e.params ? ' ' + JSON.stringify(e.params) : ''}`,
-  }));
+  const headers = Object.fromEntries(Object.entries(r.headers).filter(([k]) => k !== 'sl-violations'));
+  return contract.checkResponse({
+    method: c.method, path: c.path, status: r.status, contentType: r.contentType, headers, body: b.body,
+  })
+    .map(message => ({ location: ['response'], severity: 'Error', code: 'openapi.yaml', message }));
 }
 
 // ------------------------------------------------------------------ run
-const stats = { cases: 0, throughPrism: 0, directOnly: 0, strict: 0, relaxed: 0, direct: 0, rejectedByPrism: 0, violations: 0, statusMismatch: 0, unexpectedRejections: 0 };
+const stats = {
+  cases: 0, throughPrism: 0, directOnly: 0, strict: 0, relaxed: 0, direct: 0, rejectedByPrism: 0, violations: 0,
+  statusMismatch: 0, unexpectedRejections: 0, referenceChecked: 0, referenceMismatches: 0,
+};
 const failures = [];
 
 function fail(c, via, status, what, details) {
@@ -310,27 +444,39 @@ function describe(v) {
   return `${v.severity ?? 'Error'} ${v.code ?? ''} at ${where || '(document)'}: ${v.message}`;
 }
 
+// Checks one answer of cutcalc: the contract, the status, and the reference case's expectations.
 function checkUpstream(c, via, r, { checkStatus = true } = {}) {
-  const v = validate2020(c, r);
+  const v = validateContract(c, r);
   if (v.length) {
     stats.violations += v.length;
-    fail(c, via, r.status, 'response body violates its schema (JSON Schema 2020-12)', v.map(describe));
+    fail(c, via, r.status, 'the answer violates openapi.yaml (contract.mjs, JSON Schema 2020-12)', v.map(describe));
   }
-  if (checkStatus && !c.expect.includes(r.status)) {
+  if (!checkStatus) return;
+  if (!c.expect.includes(r.status)) {
     stats.statusMismatch++;
     fail(c, via, r.status, `status ${r.status}, expected ${c.expect.join(' or ')}`, [r.text.slice(0, 300)]);
+  } else if (c.reference && !c.referenceChecked) {
+    c.referenceChecked = true;
+    stats.referenceChecked++;
+    const m = referenceMismatches(c, r);
+    if (m.length) {
+      stats.referenceMismatches++;
+      fail(c, via, r.status, 'the answer differs from the reference case', m.slice(0, 10));
+    }
   }
 }
 
 async function runDirect(c, reason) {
   const r = await send(DIRECT, c);
   stats.direct++;
-  const v = validateWithPrism(c, r);
-  if (VERBOSE) console.log(`  direct  ${c.id}: ${r.status} (${reason})${v.length ? ' VIOLATION' : ''}`);
-  if (v.length) {
-    stats.violations += v.length;
-    fail(c, 'direct', r.status, "response violates the contract (Prism's validator)", v.map(describe));
+  if (MODE === 'prism') {
+    const v = validateWithPrism(c, r);
+    if (v.length) {
+      stats.violations += v.length;
+      fail(c, 'direct', r.status, "response violates the contract (Prism's validator)", v.map(describe));
+    }
   }
+  if (VERBOSE) console.log(`  direct  ${c.id}: ${r.status}${reason ? ` (${reason})` : ''}`);
   checkUpstream(c, 'direct', r);
 }
 
@@ -356,6 +502,10 @@ async function runThroughPrism(c, base, label) {
 
 async function runCase(c) {
   stats.cases++;
+  if (MODE !== 'prism') {
+    await runDirect(c);
+    return;
+  }
   if (c.directOnly) {
     stats.directOnly++;
     await runDirect(c, c.directOnly);
@@ -377,14 +527,46 @@ async function runCase(c) {
   else if (c.exact) await runDirect(c, 'body bytes that Prism rewrites');
 }
 
+// Starts the cutcalc binary on a free loopback port; resolves when it reports its port.
+function startCutcalc(bin) {
+  return new Promise((resolve, reject) => {
+    const child = spawn(bin, ['--host', '127.0.0.1', '--port', '0', '--threads', '2', '--log-level', 'info', '--log-format', 'text'],
+      { stdio: ['ignore', 'pipe', 'pipe'] });
+    let output = '';
+    const timer = setTimeout(() => reject(new Error(`cutcalc did not report its port within 20 s: ${output}`)), 20000);
+    const onData = d => {
+      output += d;
+      const m = output.match(/listening on http:\/\/127\.0\.0\.1:(\d+)/);
+      if (m) {
+        clearTimeout(timer);
+        child.stdout.removeAllListeners('data');
+        child.stdout.resume();
+        child.stderr.resume();
+        resolve({ child, url: `http://127.0.0.1:${m[1]}` });
+      }
+    };
+    child.stdout.on('data', onData);
+    child.stderr.on('data', onData);
+    child.on('error', reject);
+    child.on('exit', code => reject(new Error(`cutcalc exited at start (${code}): ${output}`)));
+  });
+}
+
 async function main() {
   const started = Date.now();
-  operations = await getHttpOperationsFromSpec(OPENAPI_FILE);
-  const { files, cases: refCases, firstValid } = referenceCases();
-  if (refCases.length === 0) {
-    console.error(`replay: no reference cases in ${REFERENCE_DIR}`);
-    process.exit(2);
+  let child;
+  if (MODE === 'prism') {
+    STRICT = env('PRISM_STRICT_URL').replace(/\/$/, '');
+    RELAXED = env('PRISM_RELAXED_URL').replace(/\/$/, '');
+    DIRECT = env('CUTCALC_URL').replace(/\/$/, '');
+    const { getHttpOperationsFromSpec } = require('@stoplight/prism-http');
+    operations = await getHttpOperationsFromSpec(OPENAPI_FILE);
+  } else if (MODE === 'start') {
+    ({ child, url: DIRECT } = await startCutcalc(opt.start));
+  } else {
+    DIRECT = opt['base-url'].replace(/\/$/, '');
   }
+  const { files, cases: refCases, firstValid } = referenceCases();
   const bad = badInputCases(firstValid);
   const ops = operationsCases();
   const all = [...refCases, ...ops, ...bad];
@@ -400,24 +582,37 @@ async function main() {
     }
   };
   await Promise.all(Array.from({ length: CONCURRENCY }, worker));
+  if (child) {
+    child.removeAllListeners('exit');
+    const exited = new Promise(resolve => child.once('exit', (code, signal) => resolve({ code, signal })));
+    child.kill('SIGTERM');
+    const { code } = await exited;
+    if (code !== 0) fail({ id: 'cutcalc', method: '-', path: '-' }, 'process', '-', `cutcalc exited with ${code} on SIGTERM`, []);
+  }
   failures.sort((a, b) => all.findIndex(c => c.id === a.id) - all.findIndex(c => c.id === b.id));
   for (const f of failures) {
     console.log(`FAIL ${f.id} [${f.op}] via ${f.via}, status ${f.status}: ${f.what}`);
     for (const d of f.details) console.log(`     ${d}`);
   }
   const seconds = ((Date.now() - started) / 1000).toFixed(1);
+  const referenceTotal = refCases.filter(c => c.reference).length;
+  const where = MODE === 'prism'
+    ? `${stats.strict + stats.relaxed} requests through Prism (${stats.strict} strict, ${stats.relaxed} relaxed after a request violation), ` +
+      `${stats.direct} sent directly and checked with Prism's validator`
+    : `${stats.direct} requests to ${MODE === 'start' ? `${path.basename(opt.start)} (started here)` : DIRECT}`;
   console.log(
-    `contract replay: ${stats.cases} cases (${refCases.length} reference from ${files.length} files, ${ops.length} operations, ${bad.length} bad-input); ` +
-      `${stats.strict + stats.relaxed} requests through Prism (${stats.strict} strict, ${stats.relaxed} relaxed after a request violation), ` +
-      `${stats.direct} sent directly and checked with Prism's validator; ${seconds} s`,
+    `replay: ${stats.cases} cases (${refCases.length} reference from ${files.length} files` +
+      (PER_FILE > 0 ? `, ${PER_FILE} per file` : '') + `, ${ops.length} operations, ${bad.length} bad-input); ${where}; ${seconds} s`,
   );
   console.log(
-    `${stats.throughPrism} cases through Prism` + (stats.directOnly ? ` (+${stats.directOnly} direct only)` : '') + `, ${stats.violations} violations` +
-      (failures.length ? `; ${failures.length} failures (${stats.statusMismatch} status mismatches, ${stats.unexpectedRejections} valid requests rejected)` : ''),
+    `replay: ${stats.referenceChecked - stats.referenceMismatches}/${referenceTotal} reference cases match their expectations, ` +
+      `${stats.violations} contract violations` + (MODE === 'prism' ? `, ${stats.throughPrism} cases through Prism` + (stats.directOnly ? ` (+${stats.directOnly} direct only)` : '') : '') +
+      (failures.length ? `; ${failures.length} failures (${stats.statusMismatch} status mismatches, ${stats.referenceMismatches} reference mismatches, ${stats.unexpectedRejections} valid requests rejected)` : '; 0 failures'),
   );
   process.exit(failures.length ? 1 : 0);
 }
 
+process.on('beforeExit', () => setupError('the run ended before its summary (a promise never settled)'));
 main().catch(e => {
   console.error(`replay: ${e.stack || e}`);
   process.exit(2);

@@ -1,24 +1,12 @@
-// Replays every case of shared/reference/entry-length.json and main-time.json over HTTP against
-// the real server: status, values within the file's tolerances, error pointers, and the contract.
+// The entry reference files are whole; their cases are replayed over HTTP by
+// tools/contract/replay.mjs (ctest ReferenceReplay.EveryCaseOverHttp).
 
 #include <gtest/gtest.h>
 
-#include "support/reference_replay.h"
+#include "support/reference_cases.h"
 
 namespace cutcalc::testing {
 namespace {
-
-class EntryReferenceCase : public ::testing::TestWithParam<ReferenceCase> {};
-
-TEST_P(EntryReferenceCase, ServiceAnswersAsTheReference) {
-  const ReferenceCase& reference = GetParam();
-  replay_reference_case(reference, entry_file_tolerance(reference.data.at("tolerance")));
-}
-
-INSTANTIATE_TEST_SUITE_P(EntryLength, EntryReferenceCase,
-                         ::testing::ValuesIn(load_cases("entry-length.json")), reference_case_name);
-INSTANTIATE_TEST_SUITE_P(MainTime, EntryReferenceCase,
-                         ::testing::ValuesIn(load_cases("main-time.json")), reference_case_name);
 
 TEST(EntryReferenceFiles, HoldTheExpectedNumberOfCases) {
   // The spec announces 20 and 13 public cases; fewer would mean a truncated or moved file.

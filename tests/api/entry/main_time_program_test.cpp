@@ -1,7 +1,8 @@
-// POST /v1/main-time/program over HTTP: every case of shared/reference/main-time-program.json
-// (values, warning codes, error pointers, the contract), the plain-text answer, the text rules of
-// every dialect (spec programs.md section 3) on every reference program, and the errors the
-// reference file does not cover. rs274 acceptance and the times on the text: tests/gcode.
+// POST /v1/main-time/program over HTTP (its reference cases are replayed by
+// tools/contract/replay.mjs, ctest ReferenceReplay.EveryCaseOverHttp): the plain-text answer, the
+// text rules of every dialect (spec programs.md section 3) on every reference program, and the
+// errors the reference file does not cover. rs274 acceptance and the times on the text:
+// tests/gcode.
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,8 @@
 
 #include "support/program_text_rules.h"
 #include "support/project_contract.h"
-#include "support/reference_replay.h"
+#include "support/reference_cases.h"
+#include "support/reference_compare.h"
 
 namespace cutcalc::testing {
 namespace {
@@ -24,40 +26,6 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kPath = "/v1/main-time/program";
-
-ToleranceFn file_tolerance(const json& tolerance) {
-  const double abs_min = tolerance.value("abs_min", 1e-9);
-  const double rel = tolerance.value("rel", 1e-9);
-  return [abs_min, rel](const std::string&, double want) {
-    return std::max(abs_min, rel * std::fabs(want));
-  };
-}
-
-std::multiset<std::string> warning_codes(const json& body) {
-  std::multiset<std::string> codes;
-  for (const json& warning : body.at("warnings"))
-    codes.insert(warning.at("code").get<std::string>());
-  return codes;
-}
-
-class ProgramReferenceCase : public ::testing::TestWithParam<ReferenceCase> {};
-
-TEST_P(ProgramReferenceCase, ServiceAnswersAsTheReference) {
-  const ReferenceCase& reference = GetParam();
-  const JsonReply reply =
-      replay_reference_case(reference, file_tolerance(reference.data.contains("tolerance")
-                                                          ? reference.data.at("tolerance")
-                                                          : json::object()));
-  const json& expect = reference.data.at("expect");
-  if (expect.contains("warning_codes")) {
-    const auto wanted = expect.at("warning_codes").get<std::multiset<std::string>>();
-    EXPECT_EQ(warning_codes(reply.json), wanted);
-  }
-}
-
-INSTANTIATE_TEST_SUITE_P(MainTimeProgram, ProgramReferenceCase,
-                         ::testing::ValuesIn(load_cases("main-time-program.json")),
-                         reference_case_name);
 
 TEST(MainTimeProgramReferenceFile, HoldsTheExpectedNumberOfCases) {
   EXPECT_GE(load_cases("main-time-program.json").size(), 30U);

@@ -9,7 +9,8 @@
 
 #include "support/program_text_rules.h"
 #include "support/project_contract.h"
-#include "support/reference_replay.h"
+#include "support/reference_cases.h"
+#include "support/reference_compare.h"
 
 namespace cutcalc::testing {
 namespace {
