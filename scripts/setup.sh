@@ -15,3 +15,13 @@ if ((${#missing[@]})); then
   "${sudo_cmd[@]}" apt-get update
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
 fi
+
+# The tests' contract checker is Node.js code (tools/contract: Ajv). Its locked packages are
+# installed here, by the setup step, never by the build (again only when package-lock.json is newer
+# than the installed tree).
+contract_tools=tools/contract
+if [[ ! -f $contract_tools/node_modules/.package-lock.json ||
+      $contract_tools/package-lock.json -nt $contract_tools/node_modules/.package-lock.json ]]; then
+  echo "setup: npm ci in $contract_tools"
+  (cd "$contract_tools" && NO_UPDATE_NOTIFIER=1 npm ci --no-audit --no-fund --loglevel=error)
+fi

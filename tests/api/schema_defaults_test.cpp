@@ -123,7 +123,8 @@ void declared_defaults(const json& schema_or_ref, const std::string& name,
       declared_defaults(part, schema_name, seen_schemas, out);
     }
   }
-  for (const auto& [key, property] : schema.value("properties", json::object()).items()) {
+  const json properties = schema.value("properties", json::object());  // named: items() views it
+  for (const auto& [key, property] : properties.items()) {
     if (property.contains("default") || resolve(property).contains("default")) {
       out.insert(schema_name + "." + key);
     }
