@@ -13,6 +13,8 @@
 //     buttons; for a program (entry, polygon) the program's file name and header, not its body;
 //     'afterprint' clears the mark;
 //   - printing without "Print sheet" (Ctrl+P) gives every section, each on its own page(s);
+//   - in Russian and in inches (lang=ru&units=inch) the bore and entry sheets say every word from
+//     the Russian catalogue (none of the English one) and give the lengths in inches;
 //   - at 375 px and 1280 px every "Print sheet" button is reached with Tab and used with Enter;
 //   - on every page: no console error, page error, failed request, HTTP error or CSP violation.
 //
@@ -21,7 +23,7 @@
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
-import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import os from 'node:os';
 import path from 'node:path';
@@ -62,6 +64,14 @@ const SECTIONS = [
 ];
 // Text of the page that is never on a sheet: navigation, buttons, the footer.
 const SCREEN_ONLY = ['Calculate', 'Print sheet', 'Copy link', 'Copy as curl', 'Download', 'cutcalc calculator', 'HTTP API contract'];
+
+// The page's catalogue modules as the browser loads them (ES modules; web/ has no package.json).
+const catalogue = async name => {
+  const source = readFileSync(path.join(repo, 'web', 'ui', `catalogue_${name}.js`), 'utf8');
+  return (await import(`data:text/javascript,${encodeURIComponent(source)}`)).default;
+};
+const EN = await catalogue('en');
+const RU = await catalogue('ru');
 
 let browser;
 let work;
@@ -329,6 +339,48 @@ describe('setup sheets (print)', () => {
       }
     });
   }
+
+  test('Print sheet in Russian and in inches: Russian words only, lengths in inches', { timeout: TEST_MS }, async () => {
+    const { context, page, log } = await openPage(`${PAGE_URL}?lang=ru&units=inch`);
+    try {
+      // Words of the sheets (the print button and those of the screen are never on them).
+      const sheetWords = ['sheet.inputs', 'sheet.calculation', 'button.print_sheet', 'button.calculate'];
+      const bore = await printSheet(page, 'bore');
+      assert.equal(bore.pages.length, 1, 'the Russian inch bore sheet is one page');
+      const boreText = bore.pages.join('\n');
+      await assertInputsAndResults(page, 'bore', boreText);
+      const units = await page.evaluate(() =>
+        Object.fromEntries([...document.querySelectorAll('#bore table.sheet-inputs tr[data-input]')].map(row => [row.dataset.input, row.cells[2].textContent])),
+      );
+      assert.equal(units['/bore_radius_mm'], RU['unit.in'], 'the bore radius in inches');
+      assert.equal(units['/cutter_radius_mm'], RU['unit.in'], 'the cutter radius in inches');
+      assert.equal(units['/feed_per_rev_mm'], RU['unit.in_per_rev'], 'the feed in inches per revolution');
+      const boreKeys = ['section.bore_milling_roughness', 'label.bore_radius', 'sheet.inputs', 'sheet.calculation', 'legend.machined_surface', 'diagram.towards_bore_axis'];
+      for (const key of boreKeys) assert.ok(includes(boreText, RU[key]), `bore: the sheet has "${RU[key]}" (${key})`);
+      for (const key of [...boreKeys, 'button.print_sheet', 'button.calculate']) {
+        assert.ok(!includes(boreText, EN[key]), `bore: the Russian sheet has "${EN[key]}" (${key})`);
+      }
+      for (const key of ['button.print_sheet', 'button.calculate']) assert.ok(!includes(boreText, RU[key]), `bore: the sheet has "${RU[key]}" (screen only)`);
+      const { cuspLabel } = await boreDrawing(page);
+      assert.ok(includes(boreText, cuspLabel), `bore: the sheet has the diagram's "${cuspLabel}"`);
+      await savePng(bore.pdf, 'print-sheet-bore-ru-inch');
+
+      const program = lastAnswer(log, '/v1/main-time/program');
+      const entry = await printSheet(page, 'entry');
+      const entryText = entry.pages.join('\n');
+      await assertInputsAndResults(page, 'entry', entryText);
+      assert.ok(includes(entryText, `${RU['sheet.file']} ${program.file_name}`), `entry: the sheet names the file ${program.file_name}`);
+      assert.ok(includes(entryText, RU['sheet.program_header']), 'entry: the program header is named in Russian');
+      assert.match(program.program, /\bG20\b/, 'the inch page asks for an inch program');
+      for (const key of ['sheet.file', 'sheet.program_header', ...sheetWords]) {
+        assert.ok(!includes(entryText, `${EN[key]} `), `entry: the Russian sheet has "${EN[key]}" (${key})`);
+      }
+      await savePng(entry.pdf, 'print-sheet-entry-ru-inch');
+      await assertClean(page, log, 'Russian inch sheets');
+    } finally {
+      await context.close();
+    }
+  });
 
   test('printing the page (no Print sheet): every section, each from the top of a new page', { timeout: TEST_MS }, async () => {
     const { context, page, log } = await openPage(PAGE_URL);

@@ -4,7 +4,9 @@
 // see, and the cusp is magnified (its caption says by how much).
 
 import { fmt, h } from './form.js';
+import { t } from './i18n.js';
 import { arrowHead, diagram, figure, points, s, unitsPerPixel } from './svg.js';
+import { fromApi, unitText } from './units.js';
 
 // Below this the two cutter positions would lie on top of each other: the angle is opened up.
 const MIN_DRAWN_ANGLE_DEG = 24;
@@ -26,6 +28,9 @@ export function boreDiagrams(inputs, answer, container) {
 // Delta to 4 significant digits: the cusp is often far below a micrometre.
 const significant = (v) => String(Number(v.toPrecision(4)));
 
+// A length of the API (mm) as the page shows it: its number in the page's units, and the unit.
+const length = (mm) => ({ value: fmt(fromApi(mm, 'mm')), unit: unitText('mm') });
+
 // ------------------------------------------------------------------ the bore and two cutters
 
 function boreView({ boreRadius: R, cutterRadius: r, teeth, milling }, answer, container) {
@@ -36,9 +41,13 @@ function boreView({ boreRadius: R, cutterRadius: r, teeth, milling }, answer, co
   const margin = R * 0.08;
   const svg = diagram(
     'bore-milling',
-    `Bore R = ${fmt(R)} mm, cutter r = ${fmt(r)} mm at the contacts of two successive teeth`,
+    t('diagram.bore_title', {
+      bore: length(R).value,
+      cutter: length(r).value,
+      unit: unitText('mm'),
+    }),
     [-R - margin, -R - margin, 2 * (R + margin), 2 * (R + margin)],
-    'Bore, centre path and cutter to scale; the cutter is drawn at the contacts of two successive teeth.',
+    t('diagram.bore_description'),
   );
   const unit = unitsPerPixel(2 * (R + margin), container);
 
@@ -104,7 +113,8 @@ function boreView({ boreRadius: R, cutterRadius: r, teeth, milling }, answer, co
       s(
         'text',
         { x: 0, y: -6 * unit, 'text-anchor': 'middle' },
-        `\u03b1 = ${fmt(alpha)}\u00b0${alpha < MIN_DRAWN_ANGLE_DEG ? ' (drawn larger)' : ''}`,
+        `\u03b1 = ${fmt(alpha)}\u00b0`,
+        alpha < MIN_DRAWN_ANGLE_DEG ? ` ${t('diagram.drawn_larger')}` : null,
       ),
     ),
   );
@@ -124,12 +134,12 @@ function boreView({ boreRadius: R, cutterRadius: r, teeth, milling }, answer, co
   return figure(
     svg,
     [
-      { cls: 's-bore', label: `bore R = ${fmt(R)} mm` },
-      { cls: 's-centre-path', label: `cutter centre path R \u2212 r = ${fmt(Rc)} mm` },
-      { cls: 's-cutter s-bore-cutter-1', label: 'cutter, tooth 1 at the bore' },
-      { cls: 's-cutter s-bore-cutter-2', label: 'cutter, next tooth at the bore' },
+      { cls: 's-bore', label: t('diagram.bore_radius', length(R)) },
+      { cls: 's-centre-path', label: t('legend.cutter_centre_path', length(Rc)) },
+      { cls: 's-cutter s-bore-cutter-1', label: t('legend.cutter_tooth_1') },
+      { cls: 's-cutter s-bore-cutter-2', label: t('legend.cutter_next_tooth') },
     ],
-    `To scale (${milling} milling, ${teeth} teeth). The square marks the cusp of the magnified view.`,
+    t('diagram.bore_caption', { milling: t(`milling.${milling}`), teeth }),
   );
 }
 
@@ -143,7 +153,7 @@ function cuspView({ boreRadius: R }, answer) {
   const delta = answer.cusp_height_um;
   const spacing = R * ((answer.pitch_angle_deg * Math.PI) / 180);
   if (!(delta > 0) || !(spacing > 0)) {
-    return h('p', { class: 'no-diagram' }, 'No cusp to magnify: the tooth marks do not overlap.');
+    return h('p', { class: 'no-diagram' }, t('diagram.no_cusp'));
   }
   const W = 400;
   const H = 230;
@@ -158,7 +168,7 @@ function cuspView({ boreRadius: R }, answer) {
   }
   const svg = diagram(
     'bore-cusp',
-    `The cusp between the marks of two successive teeth, magnified: \u0394 = ${significant(delta)} \u00b5m`,
+    t('diagram.cusp_title', { value: significant(delta), unit: unitText('um') }),
     [0, 0, W, H],
   );
   const toothPath = (centre, index) => {
@@ -178,8 +188,8 @@ function cuspView({ boreRadius: R }, answer) {
     toothPath(-spacing / 2, 1),
     toothPath(spacing / 2, 2),
     s('polyline', { 'data-role': 'surface', class: 's-contour', points: points(surface) }),
-    s('text', { x: 8, y: y(0), dy: '1.2em' }, `bore R = ${fmt(R)} mm`),
-    s('text', { x: 8, y: 18 }, 'towards the bore axis \u2191'),
+    s('text', { x: 8, y: y(0), dy: '1.2em' }, t('diagram.bore_radius', length(R))),
+    s('text', { x: 8, y: 18 }, t('diagram.towards_bore_axis')),
   );
   // Delta: from the bore line up to the cusp, labelled with the computed value.
   const top = y(delta);
@@ -201,7 +211,7 @@ function cuspView({ boreRadius: R }, answer) {
           dx: '0.6em',
           dy: '0.35em',
         },
-        `\u0394 = ${significant(delta)} \u00b5m`,
+        `\u0394 = ${significant(delta)} ${unitText('um')}`,
       ),
     ),
   );
@@ -223,7 +233,7 @@ function cuspView({ boreRadius: R }, answer) {
       s(
         'text',
         { x: W / 2, y: yDim, dy: '-0.45em', 'text-anchor': 'middle' },
-        `R\u03b1 = ${significant(spacing)} mm`,
+        `R\u03b1 = ${significant(fromApi(spacing, 'mm'))} ${unitText('mm')}`,
       ),
     ),
   );
@@ -232,10 +242,10 @@ function cuspView({ boreRadius: R }, answer) {
   return figure(
     svg,
     [
-      { cls: 's-contour', label: 'machined surface' },
-      { cls: 's-tooth-path s-bore-cutter-1', label: 'mark of tooth 1' },
-      { cls: 's-tooth-path s-bore-cutter-2', label: 'mark of the next tooth' },
+      { cls: 's-contour', label: t('legend.machined_surface') },
+      { cls: 's-tooth-path s-bore-cutter-1', label: t('legend.mark_of_tooth_1') },
+      { cls: 's-tooth-path s-bore-cutter-2', label: t('legend.mark_of_next_tooth') },
     ],
-    `Magnified: depth drawn ${exaggeration} times larger than length along the bore.`,
+    t('diagram.cusp_caption', { factor: exaggeration }),
   );
 }

@@ -164,8 +164,15 @@ export default {
   'button.copy_link': 'Copy link',
   'button.copy_curl': 'Copy as curl',
   'button.download_csv': 'Download CSV',
+  'button.print_sheet': 'Print sheet',
   // Before the first answer
   'placeholder.calculating': 'Calculating…',
+  // Setup sheets (print_sheet.js, sheet_content.js): what the printed sheet adds
+  'sheet.inputs': 'Inputs',
+  'sheet.calculation': 'Calculation:',
+  'sheet.program_header': 'Program header',
+  'sheet.file': 'File',
+  'sheet.iso': 'ISO',
   // Units (ids as in units.js)
   'unit.mm': 'mm',
   'unit.deg': 'deg',
@@ -302,6 +309,22 @@ export default {
   'diagram.hole_caption': 'Program coordinates: hole centre X0 Y0, Y up; the dashed square marks the corner detail.',
   'diagram.corner_title': 'Corner detail: the ideal polygon corner and the predicted hole',
   'diagram.corner_gap': 'corner gap g = {value} {unit}',
+  // The bore milling diagrams (bore_diagram.js)
+  'diagram.bore_title': 'Bore R = {bore} {unit}, cutter r = {cutter} {unit} at the contacts of two successive teeth',
+  'diagram.bore_description': 'Bore, centre path and cutter to scale; the cutter is drawn at the contacts of two successive teeth.',
+  'diagram.drawn_larger': '(drawn larger)',
+  'diagram.bore_radius': 'bore R = {value} {unit}',
+  'diagram.bore_caption': 'To scale ({milling} milling, {teeth} teeth). The square marks the cusp of the magnified view.',
+  'diagram.no_cusp': 'No cusp to magnify: the tooth marks do not overlap.',
+  'diagram.cusp_title': 'The cusp between the marks of two successive teeth, magnified: Δ = {value} {unit}',
+  'diagram.towards_bore_axis': 'towards the bore axis ↑',
+  'diagram.cusp_caption': 'Magnified: depth drawn {factor} times larger than length along the bore.',
+  'legend.cutter_centre_path': 'cutter centre path R − r = {value} {unit}',
+  'legend.cutter_tooth_1': 'cutter, tooth 1 at the bore',
+  'legend.cutter_next_tooth': 'cutter, next tooth at the bore',
+  'legend.machined_surface': 'machined surface',
+  'legend.mark_of_tooth_1': 'mark of tooth 1',
+  'legend.mark_of_next_tooth': 'mark of the next tooth',
   // Copying
   'copy.link.copied': 'Link copied.',
   'copy.link.failed': 'Could not copy the link: copy it from here.',

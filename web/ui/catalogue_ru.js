@@ -163,8 +163,15 @@ export default {
   'button.copy_link': 'Копировать ссылку',
   'button.copy_curl': 'Копировать как curl',
   'button.download_csv': 'Скачать CSV',
+  'button.print_sheet': 'Печать карты наладки',
   // Before the first answer
   'placeholder.calculating': 'Расчёт…',
+  // Setup sheets (print_sheet.js, sheet_content.js): what the printed sheet adds
+  'sheet.inputs': 'Исходные данные',
+  'sheet.calculation': 'Расчёт:',
+  'sheet.program_header': 'Заголовок программы',
+  'sheet.file': 'Файл',
+  'sheet.iso': 'ISO',
   // Units (ids as in units.js)
   'unit.mm': 'мм',
   'unit.deg': '°',
@@ -301,6 +308,22 @@ export default {
   'diagram.hole_caption': 'Координаты программы: центр отверстия X0 Y0, Y вверх; штриховой квадрат — область увеличенного угла.',
   'diagram.corner_title': 'Угол крупно: угол идеального многоугольника и ожидаемое отверстие',
   'diagram.corner_gap': 'недорез в углу g = {value} {unit}',
+  // The bore milling diagrams (bore_diagram.js)
+  'diagram.bore_title': 'Отверстие R = {bore} {unit}, фреза r = {cutter} {unit} в точках контакта двух соседних зубьев',
+  'diagram.bore_description': 'Отверстие, траектория центра и фреза в масштабе; фреза показана в точках контакта двух соседних зубьев с отверстием.',
+  'diagram.drawn_larger': '(показан увеличенным)',
+  'diagram.bore_radius': 'отверстие R = {value} {unit}',
+  'diagram.bore_caption': 'В масштабе ({milling} фрезерование, число зубьев {teeth}). Квадратом отмечен гребешок, показанный крупно.',
+  'diagram.no_cusp': 'Гребешок не показан: следы зубьев не перекрываются.',
+  'diagram.cusp_title': 'Гребешок между следами двух соседних зубьев, крупно: Δ = {value} {unit}',
+  'diagram.towards_bore_axis': 'к оси отверстия ↑',
+  'diagram.cusp_caption': 'Крупно: масштаб по глубине к масштабу вдоль отверстия {factor} : 1.',
+  'legend.cutter_centre_path': 'траектория центра фрезы R − r = {value} {unit}',
+  'legend.cutter_tooth_1': 'фреза, зуб 1 касается отверстия',
+  'legend.cutter_next_tooth': 'фреза, следующий зуб касается отверстия',
+  'legend.machined_surface': 'обработанная поверхность',
+  'legend.mark_of_tooth_1': 'след зуба 1',
+  'legend.mark_of_next_tooth': 'след следующего зуба',
   // Copying
   'copy.link.copied': 'Ссылка скопирована.',
   'copy.link.failed': 'Не удалось скопировать ссылку: скопируйте её отсюда.',

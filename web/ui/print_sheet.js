@@ -5,6 +5,7 @@
 // parts are rebuilt after each calculation, so they are the inputs of the results shown.
 
 import { h } from './form.js';
+import { t } from './i18n.js';
 import { inputsTable, linkLine, programHeader } from './sheet_content.js';
 
 // The section being printed alone carries this attribute until the print dialog closes.
@@ -23,7 +24,7 @@ export function wirePrintSheets(calculators) {
       program.replaceChildren(...programHeader(section.querySelector('pre[data-file-name]')));
     });
 
-    const button = h('button', { type: 'button', id: `${id}-print` }, 'Print sheet');
+    const button = h('button', { type: 'button', id: `${id}-print` }, t('button.print_sheet'));
     form.querySelector('.actions').append(button);
     button.addEventListener('click', async () => {
       // Edits not yet calculated are calculated first: the sheet shows the inputs as they are.

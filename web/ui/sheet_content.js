@@ -4,6 +4,8 @@
 // symbols and units are the page's own, whatever language or units it shows them in.
 
 import { h } from './form.js';
+import { t } from './i18n.js';
+import { unitText } from './units.js';
 import { sectionLink } from './url_state.js';
 
 // Lines of a program shown on the sheet when it has no safe-height rapid to end its header on.
@@ -12,7 +14,7 @@ const FALLBACK_HEADER_LINES = 12;
 // The inputs of `form` as a table: one group per fieldset, a row per applicable field
 // (label with its symbol | value | unit); a field hidden because it does not apply is left out.
 export function inputsTable(form) {
-  const table = h('table', { class: 'sheet-inputs' }, h('caption', {}, 'Inputs'));
+  const table = h('table', { class: 'sheet-inputs' }, h('caption', {}, t('sheet.inputs')));
   for (const fieldset of form.querySelectorAll('fieldset')) {
     const rows = [...fieldset.querySelectorAll('.field')]
       .filter((field) => !field.hidden)
@@ -31,7 +33,7 @@ function inputRow(field) {
   const control = field.querySelector('input[name^="/"], select[name^="/"]');
   const label = field.querySelector('label');
   if (!control || !label) return null;
-  const { quantity, unit } = splitUnit(label);
+  const { quantity, unit } = labelParts(label);
   const shown =
     control.tagName === 'SELECT'
       ? (control.selectedOptions[0]?.textContent ?? control.value)
@@ -45,18 +47,26 @@ function inputRow(field) {
   );
 }
 
-// A label reads "quantity symbol, unit": its nodes without the unit, and the unit.
-function splitUnit(label) {
-  const quantity = [...label.cloneNode(true).childNodes];
-  const last = quantity.at(-1);
-  const match = last?.nodeType === Node.TEXT_NODE ? /,\s*([^,]+)$/.exec(last.textContent) : null;
-  if (!match) return { quantity, unit: '' };
-  last.textContent = last.textContent.slice(0, match.index);
-  return { quantity, unit: match[1].trim() };
+// A label is built of parts (index.html): the quantity's text (data-i18n), its paper symbol
+// (.sym), its ISO symbol (var.iso) and its unit (.unit, data-unit, the API's unit id). The sheet
+// shows the parts before the unit, one space apart, and the unit in the page's units apart. The
+// ISO symbol's mark, drawn by the page's CSS, is text on the sheet (print loses the colour).
+function labelParts(label) {
+  const quantity = [];
+  for (const part of label.children) {
+    if (part.matches('[data-unit]')) continue;
+    if (quantity.length) quantity.push(' ');
+    if (part.matches('var.iso')) {
+      quantity.push(h('span', { class: 'iso-mark' }, t('sheet.iso')), ' ');
+    }
+    quantity.push(part.cloneNode(true));
+  }
+  const unit = label.querySelector('[data-unit]')?.dataset.unit ?? '';
+  return { quantity, unit: unitText(unit) };
 }
 
 export function linkLine(id, form) {
-  return h('p', { class: 'sheet-link' }, 'Calculation: ', sectionLink(id, form));
+  return h('p', { class: 'sheet-link' }, t('sheet.calculation'), ' ', sectionLink(id, form));
 }
 
 // The program's file name and header (its blocks up to the first rapid to the safe height, where
@@ -67,8 +77,14 @@ export function programHeader(pre) {
   const safe = lines.findIndex((line) => /^G0?0\b.*Z/.test(line.trim()));
   const header = lines.slice(0, safe >= 0 ? safe + 1 : FALLBACK_HEADER_LINES);
   return [
-    h('h3', {}, 'Program header'),
-    h('p', {}, 'File ', h('span', { class: 'sheet-file-name' }, pre.dataset.fileName ?? '')),
+    h('h3', {}, t('sheet.program_header')),
+    h(
+      'p',
+      {},
+      t('sheet.file'),
+      ' ',
+      h('span', { class: 'sheet-file-name' }, pre.dataset.fileName ?? ''),
+    ),
     h('pre', { class: 'sheet-program-header' }, header.join('\n')),
   ];
 }
