@@ -2,10 +2,11 @@
 // Writes a TypeScript client (openapi-fetch, typed by openapi-typescript's `paths` from
 // openapi.yaml) that sends every reference case of ../shared/reference/*.json to a live cutcalc,
 // as an object literal in `client.POST(endpoint, { body: {...} })`:
-//   - status 200 cases: the answer must be 200 application/json and hold expect.body's values
-//     (numbers within the file's tolerance), expect.max / expect.min and expect.warning_codes;
-//     every field the case checks is also read through the typed `data`, so the response types
-//     must have it;
+//   - status 200 cases: the answer must be 200 application/json and have every field that
+//     expect.body, expect.max and expect.min name, with the JSON type of the expected value; each
+//     of those fields is also read through the typed `data`, so the response types must have it.
+//     The values themselves are the one reference replayer's job (tools/contract/replay.mjs, run
+//     by ctest in every preset, by the contract step and against the container);
 //   - status 422 cases: classified here, from the request schema in openapi.yaml, as expressible
 //     in the generated types or not (typeViolations below). An expressible case is written under
 //     `// @ts-expect-error`, so tsc fails when the types accept it (too loose); the others are
@@ -13,8 +14,7 @@
 //     Every 422 case is sent (tsc still emits JavaScript for the suppressed lines) and must be
 //     answered 422 application/problem+json with errors[] naming expect.pointer.
 // Everything comes from openapi.yaml and the reference files at run time: each file's `endpoint`
-// (as tools/contract/replay.mjs reads it), its cases, its tolerance numbers and its `compare`
-// text. Nothing here is per case.
+// (as tools/contract/replay.mjs reads it) and its cases. Nothing here is per case.
 //
 // Usage: node gen-reference-client.mjs --openapi FILE --reference DIR --out DIR
 // Writes DIR/reference-client.ts, DIR/reference-checks.ts (copied), DIR/tsconfig.json and
@@ -159,20 +159,6 @@ function typeViolations(schemaNode, value, pointer, visibleNames) {
 
 // Sanity check of the rule on the 200 cases: a request the service accepts must show no violation
 // here (else the rule, or the contract, is wrong).
-// ------------------------------------------------------------------ tolerances
-function toleranceOf(file, doc, c) {
-  const t = c.tolerance;
-  if (t === undefined) return { kind: 'exact' };
-  const keys = Object.keys(t).sort().join(',');
-  if (keys === 'abs_min,abs_mm') return { kind: 'by-key', abs_mm: t.abs_mm, abs_min: t.abs_min };
-  if (keys === 'abs,rel' || keys === 'abs_min,rel') {
-    // The file's compare text says how abs and rel combine: "abs + rel |want|" or max(abs, rel |want|).
-    const sum = /abs\s*\+\s*(tolerance\.)?rel\b/.test(doc.compare ?? '');
-    return { kind: sum ? 'sum' : 'max', abs: t.abs ?? t.abs_min, rel: t.rel };
-  }
-  die(`${file}:${c.id}: tolerance ${JSON.stringify(t)} has a form this generator does not know`);
-}
-
 // ------------------------------------------------------------------ emit
 const isIdentifier = k => /^[A-Za-z_$][A-Za-z0-9_$]*$/.test(k);
 const access = k => (typeof k === 'number' ? `?.[${k}]` : isIdentifier(k) ? `?.${k}` : `?.[${JSON.stringify(k)}]`);
@@ -186,7 +172,8 @@ function typedReads(expected, base, out) {
   return out;
 }
 
-const CHECKED_EXPECT = new Set(['status', 'body', 'max', 'min', 'warning_codes', 'pointer']);
+// Expectation keys this client reads (warning_codes and program are the replayer's alone).
+const CHECKED_EXPECT = new Set(['status', 'body', 'max', 'min', 'pointer']);
 
 let files;
 try {
@@ -229,17 +216,16 @@ for (const file of files) {
       const violations = typeViolations(schema, c.request, '');
       if (violations.length) ruleProblems.push(`${id}: a 200 request shows type-level violations: ${violations.map(v => `${v.pointer} ${v.rule}`).join('; ')}`);
       const expect = {};
-      for (const k of ['body', 'max', 'min', 'warning_codes']) if (c.expect[k] !== undefined) expect[k] = c.expect[k];
+      for (const k of ['body', 'max', 'min']) if (c.expect[k] !== undefined) expect[k] = c.expect[k];
       const reads = [
         ...typedReads(c.expect.body ?? {}, 'data', []),
         ...typedReads(c.expect.max ?? {}, 'data', []),
         ...typedReads(c.expect.min ?? {}, 'data', []),
-        ...(c.expect.warning_codes ? ['data?.warnings?.[0]?.code'] : []),
       ];
       lines.push(
         `    const { data, error, response } = ${call};`,
         `    read(${[...new Set(reads)].join(', ')});`,
-        `    expectOk(${JSON.stringify(id)}, response, data, error, ${JSON.stringify(expect)}, ${JSON.stringify(toleranceOf(file, doc, c))});`,
+        `    expectOk(${JSON.stringify(id)}, response, data, error, ${JSON.stringify(expect)});`,
       );
     } else if (status === 422) {
       if (typeof c.expect.pointer !== 'string') die(`${id}: a 422 case without expect.pointer`);
