@@ -1,12 +1,13 @@
 #include "service/http_tuning.h"
 
+#include "service/cpu_budget.h"
+
 #include <sys/resource.h>
 #include <sys/socket.h>
 
 #include <algorithm>
 #include <functional>
 #include <string>
-#include <thread>
 
 namespace cutcalc::service {
 namespace {
@@ -49,7 +50,7 @@ std::string_view reason_phrase(int status) {
 
 std::size_t effective_event_loop_threads(const HttpTuning& tuning) {
   if (tuning.event_loop_threads > 0) return tuning.event_loop_threads;
-  return std::max(1U, std::thread::hardware_concurrency());
+  return read_cpu_budget().usable_cpus;
 }
 
 std::size_t effective_max_connections(const HttpTuning& tuning) {

@@ -26,7 +26,7 @@
 namespace cutcalc::service {
 
 struct HttpTuning {
-  std::size_t event_loop_threads = 0;           // 0: one per core
+  std::size_t event_loop_threads = 0;           // 0: one per usable CPU (cpu_budget.h)
   std::size_t keep_alive_max_requests = 10000;  // requests per keep-alive connection
   long keep_alive_timeout_s = 5;                // idle keep-alive connection closed after this
   long request_timeout_ms = 10000;         // a whole request (head + body), from its first byte

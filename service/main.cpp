@@ -9,7 +9,9 @@
 
 #include "service/build_info.h"
 #include "service/config.h"
+#include "service/cpu_budget.h"
 #include "service/http_app.h"
+#include "service/http_tuning.h"
 #include "service/logging.h"
 #include "service/signals.h"
 
@@ -40,6 +42,8 @@ int main(int argc, char** argv) {
     app.shutdown();
   });
   spdlog::info("cutcalc {} listening on http://{}:{}", build_version(), config.host, port);
+  spdlog::info("event loops: {}; the CPUs this process may use: {}",
+               effective_event_loop_threads(config.http), describe(read_cpu_budget()));
   const bool served = app.serve();
   spdlog::info("stopped");
   return served ? 0 : 1;
