@@ -21,6 +21,8 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 # shellcheck source=scripts/lib/start_cutcalc.sh
 source "$ROOT/scripts/lib/start_cutcalc.sh"
+# shellcheck source=scripts/lib/ensure_node.sh
+source "$ROOT/scripts/lib/ensure_node.sh"
 TOOLS=$ROOT/tools/codegen
 OPENAPI=$(realpath "${CODEGEN_OPENAPI:-$ROOT/openapi.yaml}")
 REFERENCE_DIR=$(realpath "${CUTCALC_REFERENCE_DIR:-$ROOT/../shared/reference}")
@@ -47,19 +49,7 @@ die() {
 }
 
 # ---------------------------------------------------------------- Node.js and the tools
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-  echo "=== codegen: installing nodejs and npm (apt)"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update
-  apt-get install -y --no-install-recommends nodejs npm
-fi
-# shellcheck disable=SC2016 # JavaScript, not shell
-node -e '
-  const [maj, min] = process.versions.node.split(".").map(Number);
-  if (maj < 20 || (maj === 20 && min < 19)) {
-    console.error(`ci-codegen: Node.js ${process.versions.node} is too old: @hey-api/openapi-ts needs >= 20.19`);
-    process.exit(1);
-  }' || exit 1
+ensure_node ci-codegen 20 19 "@hey-api/openapi-ts" || exit 1
 [[ -d "$REFERENCE_DIR" ]] || die "no reference directory $REFERENCE_DIR"
 echo "=== codegen: npm ci (tools/codegen; node $(node --version), npm $(npm --version 2>/dev/null))"
 (cd "$TOOLS" && npm ci --no-audit --no-fund --loglevel=error)

@@ -14,6 +14,8 @@ cd "$(dirname "$0")/.."
 ROOT=$PWD
 # shellcheck source=scripts/lib/start_cutcalc.sh
 source "$ROOT/scripts/lib/start_cutcalc.sh"
+# shellcheck source=scripts/lib/ensure_node.sh
+source "$ROOT/scripts/lib/ensure_node.sh"
 TOOLS=$ROOT/tools/contract
 OPENAPI=$(realpath "${CONTRACT_OPENAPI:-$ROOT/openapi.yaml}")
 BIN=${CUTCALC_BIN:-$ROOT/build/release/service/cutcalc}
@@ -39,19 +41,7 @@ die() {
 }
 
 # ---------------------------------------------------------------- Node.js and the tools
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-  echo "=== contract: installing nodejs and npm (apt)"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update
-  apt-get install -y --no-install-recommends nodejs npm
-fi
-# shellcheck disable=SC2016 # JavaScript, not shell
-node -e '
-  const [maj, min] = process.versions.node.split(".").map(Number);
-  if (maj < 20 || (maj === 20 && min < 19)) {
-    console.error(`ci-contract: Node.js ${process.versions.node} is too old: Redocly CLI 2 needs >= 20.19`);
-    process.exit(1);
-  }' || exit 1
+ensure_node ci-contract 20 19 "Redocly CLI 2" || exit 1
 echo "=== contract: npm ci (tools/contract; node $(node --version), npm $(npm --version 2>/dev/null))"
 (cd "$TOOLS" && npm ci --no-audit --no-fund --loglevel=error)
 INSTALLED=$(date +%s)

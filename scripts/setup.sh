@@ -20,15 +20,9 @@ fi
 # installed here, by the setup step, never by the build (again only when package-lock.json is newer
 # than the installed tree).
 contract_tools=tools/contract
-# Node.js and npm: Debian's, unless the machine has them already (a NodeSource nodejs bundles npm
-# and conflicts with Debian's npm package, so they are not in debian-packages.txt).
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-  sudo_cmd=()
-  [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
-  echo "setup: installing nodejs npm"
-  "${sudo_cmd[@]}" apt-get update
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y --no-install-recommends nodejs npm
-fi
+# shellcheck source=scripts/lib/ensure_node.sh
+source scripts/lib/ensure_node.sh
+ensure_node setup
 if [[ ! -f $contract_tools/node_modules/.package-lock.json ||
       $contract_tools/package-lock.json -nt $contract_tools/node_modules/.package-lock.json ]]; then
   echo "setup: npm ci in $contract_tools"

@@ -22,28 +22,10 @@
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const repo = path.resolve(here, '..', '..');
-const requireFromTools = createRequire(path.join(repo, 'tools', 'e2e', 'package.json'));
-const { chromium } = requireFromTools('playwright-core');
-
-const env = (name, fallback) => {
-  const value = process.env[name];
-  return value !== undefined && value !== '' ? value : fallback;
-};
-const API = (env('CUTCALC_URL') ?? '').replace(/\/$/, '');
-if (!API) throw new Error('CUTCALC_URL is not set (the base URL of a running cutcalc)');
-const PAGE_URL = env('E2E_PAGE_URL', `${API}/`);
-const ARTIFACT_DIR = path.resolve(repo, env('E2E_ARTIFACT_DIR', path.join('build', 'e2e')));
-const CHROMIUM = env('CHROMIUM_PATH', '/usr/bin/chromium');
-const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'];
-const WAIT_MS = 20000;
-const TEST_MS = 120000;
-const QUIET_MS = 1200; // longer than the page's pause before it recalculates (600 ms)
+import { CHROMIUM, CHROMIUM_ARGS, chromium, env, repo } from './browser.mjs';
+import { API, ARTIFACT_DIR, PAGE_URL, QUIET_MS, TEST_MS, WAIT_MS, assertClean, settle } from './page_session.mjs';
 
 const SECTIONS = ['entry', 'speeds', 'groove', 'bore', 'polygon'];
 const SECTION_PATHS = {
@@ -129,20 +111,7 @@ async function openPage(url, viewport = { width: 1280, height: 900 }) {
   return { context, page, log };
 }
 
-async function settle(log) {
-  log.lastActivity = Math.max(log.lastActivity, Date.now());
-  const deadline = Date.now() + WAIT_MS;
-  while (log.inFlight > 0 || Date.now() - log.lastActivity < QUIET_MS) {
-    assert.ok(Date.now() < deadline, `the page's requests did not settle within ${WAIT_MS} ms`);
-    await new Promise(resolve => setTimeout(resolve, 50));
-  }
-  await Promise.all(log.exchanges.map(e => e.done));
-}
 
-async function assertClean(page, log, label) {
-  const csp = await page.evaluate(() => window.__cspViolations ?? []);
-  assert.deepEqual([...log.problems, ...csp.map(v => `CSP violation: ${v}`)], [], `${label}: trouble on the page`);
-}
 
 // Every visible text of the page as [text, where]: text nodes of rendered elements, the options
 // of visible selects, SVG text; not the G-code programs (machine text) nor the API's own values

@@ -24,34 +24,16 @@ import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import os from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { promisify } from 'node:util';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const repo = path.resolve(here, '..', '..');
-const requireFromTools = createRequire(path.join(repo, 'tools', 'e2e', 'package.json'));
-const { chromium } = requireFromTools('playwright-core');
-const run = promisify(execFile);
+import { CHROMIUM, CHROMIUM_ARGS, chromium, env, repo } from './browser.mjs';
+import { API, ARTIFACT_DIR, PAGE_URL, QUIET_MS, TEST_MS, WAIT_MS, assertClean, settle } from './page_session.mjs';
 
-const env = (name, fallback) => {
-  const value = process.env[name];
-  return value !== undefined && value !== '' ? value : fallback;
-};
-const API = (env('CUTCALC_URL') ?? '').replace(/\/$/, '');
-if (!API) throw new Error('CUTCALC_URL is not set (the base URL of a running cutcalc)');
-const PAGE_URL = env('E2E_PAGE_URL', `${API}/`);
-const ARTIFACT_DIR = path.resolve(repo, env('E2E_ARTIFACT_DIR', path.join('build', 'e2e')));
-const CHROMIUM = env('CHROMIUM_PATH', '/usr/bin/chromium');
-const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'];
+const run = promisify(execFile);
 const PDFTOTEXT = env('PDFTOTEXT', 'pdftotext');
 const PDFTOPPM = env('PDFTOPPM', 'pdftoppm');
-const WAIT_MS = 20000;
-const TEST_MS = 120000;
-// Longer than the page's pause before it recalculates (calculation.js PAUSE_MS, 600 ms).
-const QUIET_MS = 1200;
 const BORE_PATH = '/v1/roughness/bore-milling';
 
 // Each section's title, and text only that section prints (a label and a result heading).
@@ -140,20 +122,7 @@ async function openPage(url, viewport = { width: 1280, height: 900 }) {
   return { context, page, log };
 }
 
-// Waits until no request is in flight and none has started for QUIET_MS.
-async function settle(log) {
-  log.lastActivity = Math.max(log.lastActivity, Date.now());
-  const deadline = Date.now() + WAIT_MS;
-  while (log.inFlight > 0 || Date.now() - log.lastActivity < QUIET_MS) {
-    assert.ok(Date.now() < deadline, `the page's requests did not settle within ${WAIT_MS} ms`);
-    await new Promise(resolve => setTimeout(resolve, 50));
-  }
-}
 
-async function assertClean(page, log, label) {
-  const csp = await page.evaluate(() => window.__cspViolations ?? []);
-  assert.deepEqual([...log.problems, ...csp.map(v => `CSP violation: ${v}`)], [], `${label}: trouble on the page`);
-}
 
 const lastAnswer = (log, endpoint) => {
   const found = log.answers.filter(a => a.path === endpoint && a.status === 200).at(-1);

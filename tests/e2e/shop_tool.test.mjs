@@ -23,31 +23,11 @@ import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { promisify } from 'node:util';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const repo = path.resolve(here, '..', '..');
-const requireFromTools = createRequire(path.join(repo, 'tools', 'e2e', 'package.json'));
-const { chromium } = requireFromTools('playwright-core');
-
-const env = (name, fallback) => {
-  const value = process.env[name];
-  return value !== undefined && value !== '' ? value : fallback;
-};
-const API = (env('CUTCALC_URL') ?? '').replace(/\/$/, '');
-if (!API) throw new Error('CUTCALC_URL is not set (the base URL of a running cutcalc)');
-const PAGE_URL = env('E2E_PAGE_URL', `${API}/`);
-const ARTIFACT_DIR = path.resolve(repo, env('E2E_ARTIFACT_DIR', path.join('build', 'e2e')));
-const CHROMIUM = env('CHROMIUM_PATH', '/usr/bin/chromium');
-const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'];
-const WAIT_MS = 20000;
-const TEST_MS = 120000;
-// Longer than the page's pause before it recalculates (calculation.js PAUSE_MS, 600 ms): a page
-// this long without a request has nothing left to send.
-const QUIET_MS = 1200;
+import { CHROMIUM, CHROMIUM_ARGS, chromium, env, repo } from './browser.mjs';
+import { API, ARTIFACT_DIR, PAGE_URL, QUIET_MS, TEST_MS, WAIT_MS, assertClean, settle } from './page_session.mjs';
 
 // The requests one calculation of each section sends (entry: one pass, the setup and its
 // program; speeds: the points, then the arc for up- and for down-milling), and an edit that makes
@@ -145,23 +125,7 @@ async function openPage(url, viewport = { width: 1280, height: 900 }) {
   return { context, page, log };
 }
 
-// Waits until no request is in flight and none has started for QUIET_MS, counting from now at
-// the earliest (the request of a key press just made may not have been reported yet).
-async function settle(log) {
-  log.lastActivity = Math.max(log.lastActivity, Date.now());
-  const deadline = Date.now() + WAIT_MS;
-  while (log.inFlight > 0 || Date.now() - log.lastActivity < QUIET_MS) {
-    assert.ok(Date.now() < deadline, `the page's requests did not settle within ${WAIT_MS} ms`);
-    await new Promise(resolve => setTimeout(resolve, 50));
-  }
-  await Promise.all(log.exchanges.map(e => e.done));
-}
 
-// No console error, page error, failed request, HTTP error or CSP violation on the page.
-async function assertClean(page, log, label) {
-  const csp = await page.evaluate(() => window.__cspViolations ?? []);
-  assert.deepEqual([...log.problems, ...csp.map(v => `CSP violation: ${v}`)], [], `${label}: trouble on the page`);
-}
 
 // The numbers (and codes) a section shows: [pointer, source, full value] of every data-result.
 async function shownResults(page, id) {
