@@ -75,12 +75,105 @@ class PositionTracker {
 
 constexpr int kNumberOverflowId = 406;  // nlohmann::json out_of_range: a number beyond a double
 
+// The common case without the bookkeeping (issue 14: the strict parse below cost ~1.3 us of a
+// 15 us request): builds the document as nlohmann's own DOM parser does and counts each object's
+// keys. It gives up (false) at the first thing the strict parse must explain, which then runs on
+// the same bytes: a syntax error, a number beyond a double, nesting at the limit, or a repeated
+// key (an object ends with fewer members than keys read).
+class PlainDocumentBuilder {
+ public:
+  using json = nlohmann::json;
+  explicit PlainDocumentBuilder(json& root) : root_(root) {}
+
+  bool null() { return put(nullptr); }
+  bool boolean(bool value) { return put(value); }
+  bool number_integer(json::number_integer_t value) { return put(value); }
+  bool number_unsigned(json::number_unsigned_t value) { return put(value); }
+  bool number_float(json::number_float_t value, const json::string_t& /*text*/) {
+    return put(value);
+  }
+  bool string(json::string_t& value) { return put(std::move(value)); }
+  bool binary(json::binary_t& /*value*/) { return false; }  // JSON text has none
+  bool start_object(std::size_t /*elements*/) { return open(json::value_t::object); }
+  bool key(json::string_t& name) {
+    Frame& frame = open_.back();
+    ++frame.keys;
+    member_ = &(*frame.container)[std::move(name)];
+    return true;
+  }
+  bool end_object() {
+    const Frame frame = open_.back();
+    open_.pop_back();
+    return frame.container->size() == frame.keys;
+  }
+  bool start_array(std::size_t /*elements*/) { return open(json::value_t::array); }
+  bool end_array() {
+    open_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t /*position*/, const std::string& /*token*/,
+                   const json::exception& /*error*/) {
+    return false;
+  }
+
+ private:
+  struct Frame {
+    json* container;  // stays valid: only the innermost open container grows
+    std::size_t keys;
+  };
+
+  // Where the next value goes: the root, the member the last key named, or the array's end.
+  json& slot() {
+    if (open_.empty()) {
+      return root_;
+    }
+    json& parent = *open_.back().container;
+    if (parent.is_array()) {
+      return parent.emplace_back();
+    }
+    return *member_;
+  }
+  template <class Value>
+  bool put(Value&& value) {
+    slot() = std::forward<Value>(value);
+    return true;
+  }
+  bool open(json::value_t kind) {
+    if (open_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
+      return false;
+    }
+    json& container = slot();
+    container = json(kind);
+    open_.push_back({&container, 0});
+    return true;
+  }
+
+  json& root_;
+  std::vector<Frame> open_;
+  json* member_ = nullptr;
+};
+
+// The strict parse: every key of every open object remembered and the position tracked, so that
+// a rejection can say which key repeated or which field overflowed.
+std::variant<nlohmann::json, Problem> parse_strictly(std::string_view body);
+
 }  // namespace
 
 std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
   if (body.empty()) {
     return Problem{ProblemKind::malformed_json, Message{ErrorCode::empty_body}, {}};
   }
+  nlohmann::json document;
+  PlainDocumentBuilder builder(document);
+  if (nlohmann::json::sax_parse(body.begin(), body.end(), &builder)) {
+    return document;
+  }
+  return parse_strictly(body);
+}
+
+namespace {
+
+std::variant<nlohmann::json, Problem> parse_strictly(std::string_view body) {
   // Keys seen so far in each open object, innermost last: duplicate keys are ambiguous input.
   std::vector<std::set<std::string>> open_objects;
   PositionTracker position;
@@ -141,5 +234,7 @@ std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
         ProblemKind::malformed_json, Message{ErrorCode::invalid_json, {{"reason", why}}}, {}};
   }
 }
+
+}  // namespace
 
 }  // namespace cutcalc::api

@@ -1,0 +1,91 @@
+// parse_json_body: the plain parse that serves valid bodies must give the library's own document,
+// and everything it gives up on must still get the strict parse's exact problem.
+
+#include "api/json_body.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <variant>
+
+namespace cutcalc::api {
+namespace {
+
+nlohmann::json parsed(const std::string& body) {
+  auto result = parse_json_body(body);
+  if (auto* problem = std::get_if<Problem>(&result)) {
+    ADD_FAILURE() << body << " was refused: "
+                  << (problem->detail ? static_cast<int>(problem->detail->code) : -1);
+    return nullptr;
+  }
+  return std::get<nlohmann::json>(result);
+}
+
+Problem refused(const std::string& body) {
+  auto result = parse_json_body(body);
+  if (auto* problem = std::get_if<Problem>(&result)) {
+    return *problem;
+  }
+  ADD_FAILURE() << body << " was accepted";
+  return Problem{};
+}
+
+std::string nested_arrays(int levels) {
+  return std::string(static_cast<std::size_t>(levels), '[') + "1" +
+         std::string(static_cast<std::size_t>(levels), ']');
+}
+
+TEST(JsonBody, ValidDocumentsEqualTheLibrarysParse) {
+  for (const std::string body : {
+           R"({"a": 1, "b": -2, "c": 18446744073709551615, "d": 2.5e-3, "e": "x\u00e9\n"})",
+           R"({"entry": {"contour": "straight", "width_mm": 60}, "flags": [true, false, null]})",
+           R"([{"a": [1, {"b": [2, 3]}]}, {"a": []}, {}, [], [[{"c": {}}]]])",
+           R"("just a string")",
+           "42",
+           "null",
+           R"(  {"spaces": [ 1 , 2 ] }  )",
+       }) {
+    EXPECT_EQ(parsed(body), nlohmann::json::parse(body)) << body;
+  }
+}
+
+TEST(JsonBody, RepeatedKeyInANestedObjectIsNamed) {
+  const Problem problem = refused(R"({"entry": {"contour": "straight", "contour": "wall"}})");
+  EXPECT_EQ(problem.kind, ProblemKind::malformed_json);
+  ASSERT_TRUE(problem.detail.has_value());
+  EXPECT_EQ(problem.detail->code, ErrorCode::duplicate_key);
+  EXPECT_EQ(problem.detail->params.value("key", ""), "contour");
+}
+
+TEST(JsonBody, SameKeyInSiblingObjectsIsNoRepeat) {
+  EXPECT_EQ(parsed(R"([{"a": 1}, {"a": 2}, {"b": {"a": 3}, "a": 4}])").size(), 3U);
+}
+
+TEST(JsonBody, NestingUpToTheLimitParsesAndBeyondIsRefused) {
+  EXPECT_EQ(parsed(nested_arrays(kMaxJsonDepth)),
+            nlohmann::json::parse(nested_arrays(kMaxJsonDepth)));
+  const Problem problem = refused(nested_arrays(kMaxJsonDepth + 1));
+  ASSERT_TRUE(problem.detail.has_value());
+  EXPECT_EQ(problem.detail->code, ErrorCode::too_deeply_nested);
+}
+
+TEST(JsonBody, NumberBeyondADoubleNamesItsField) {
+  const Problem problem = refused(R"({"entry": {"width_mm": [1, 1e400]}})");
+  EXPECT_EQ(problem.kind, ProblemKind::invalid_input);
+  ASSERT_EQ(problem.errors.size(), 1U);
+  EXPECT_EQ(problem.errors[0].pointer, "/entry/width_mm/1");
+  EXPECT_EQ(problem.errors[0].code, ErrorCode::not_finite);
+}
+
+TEST(JsonBody, TrailingGarbageAndBadUtf8AreMalformed) {
+  for (const std::string& body :
+       {std::string(R"({"a": 1} x)"), std::string("{\"a\xff\": 1}"), std::string(R"({"a": 1,})")}) {
+    const Problem problem = refused(body);
+    EXPECT_EQ(problem.kind, ProblemKind::malformed_json) << body;
+    ASSERT_TRUE(problem.detail.has_value());
+    EXPECT_EQ(problem.detail->code, ErrorCode::invalid_json) << body;
+  }
+}
+
+}  // namespace
+}  // namespace cutcalc::api
