@@ -14,6 +14,7 @@
 #include "api/problem.h"
 #include "api/routes.h"
 #include "service/build_info.h"
+#include "service/http_connection.h"
 #include "service/http_tuning.h"
 #include "service/logging.h"
 #include "service/request_id.h"
@@ -195,6 +196,15 @@ void HttpApp::install_middleware() {
       res.set_header("Allow", route->allow);
       return httplib::Server::HandlerResponse::Handled;
     }
+    if (route->calculation != nullptr) {
+      // Answered here, from the body the engine framed: the library would otherwise match every
+      // route's regex and copy the body first.
+      write(res, api::run_json_endpoint(
+                     {req.path, req.get_header_value("Content-Type"), framed_request_body(),
+                      t_request.request_id, req.get_header_value("Accept"), language_of(req)},
+                     route->calculation));
+      return httplib::Server::HandlerResponse::Handled;
+    }
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
@@ -249,17 +259,9 @@ void HttpApp::install_middleware() {
 }
 
 void HttpApp::install_routes() {
+  // Calculations are answered at routing (install_middleware); the library only serves the rest.
   for (const api::CalculationRoute& route : api::calculation_routes()) {
-    routes_.add(route.path, RouteMethod::post);
-    server_->Post(
-        route.path, [handler = route.handler](const httplib::Request& req, httplib::Response& res) {
-          const std::string content_type = req.get_header_value("Content-Type");
-          const std::string& request_id = t_request.request_id;
-          const std::string accept = req.get_header_value("Accept");
-          write(res, api::run_json_endpoint(
-                         {req.path, content_type, req.body, request_id, accept, language_of(req)},
-                         handler));
-        });
+    routes_.add_calculation(route.path, route.handler);
   }
 
   routes_.add("/healthz", RouteMethod::get);

@@ -37,7 +37,17 @@ SocketAddresses::Address address_of(int fd, bool peer) {
   return address;
 }
 
+thread_local std::string_view t_framed_body;
+
 }  // namespace
+
+std::string_view framed_request_body() { return t_framed_body; }
+
+FramedRequestBody::FramedRequestBody(std::string_view body) : previous_(t_framed_body) {
+  t_framed_body = body;
+}
+
+FramedRequestBody::~FramedRequestBody() { t_framed_body = previous_; }
 
 const SocketAddresses::Address& SocketAddresses::peer() const {
   if (!peer_) peer_ = address_of(fd_, true);

@@ -56,6 +56,24 @@ class ConnectionStream final : public httplib::Stream {
   const SocketAddresses& addresses_;
 };
 
+// The body of the request the calling thread is serving, framed by the engine before the library
+// parses anything (empty outside a request and for a request without one). The library reads a
+// body only after its pre-routing handler; the app answers a calculation there, from this view,
+// which saves the library's regex routing and its copy of the body (issue 14).
+std::string_view framed_request_body();
+
+// Makes `body` the calling thread's framed_request_body() for this object's lifetime.
+class FramedRequestBody {
+ public:
+  explicit FramedRequestBody(std::string_view body);
+  FramedRequestBody(const FramedRequestBody&) = delete;
+  FramedRequestBody& operator=(const FramedRequestBody&) = delete;
+  ~FramedRequestBody();
+
+ private:
+  std::string_view previous_;
+};
+
 // Counters kept by the engine (monotonic, for metrics).
 struct ConnectionCounters {
   std::atomic<std::uint64_t> connections{0};

@@ -335,8 +335,10 @@ class EventLoopEngine::Loop {
       bool connection_closed = false;
       bool ok = false;
       {
-        ConnectionStream stream(library_request(unread, frame, connection.scratch),
-                                connection.output, connection.addresses);
+        const std::string_view request = library_request(unread, frame, connection.scratch);
+        const FramedRequestBody body(
+            request.substr(request.size() - std::min(frame.body_bytes, request.size())));
+        ConnectionStream stream(request, connection.output, connection.addresses);
         try {
           ok = engine_.serve_(stream, close_connection, connection_closed);
         } catch (...) {  // the library catches handler exceptions; anything else ends the line

@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "api/json_endpoint.h"
+
 namespace cutcalc::service {
 
 // The method a path's handler takes.
@@ -14,6 +16,7 @@ enum class RouteMethod { get, post };
 struct RouteEntry {
   std::string path;
   std::string allow;  // the Allow header value: "GET, HEAD, OPTIONS" or "POST, OPTIONS"
+  api::JsonHandler calculation = nullptr;  // a POST calculation's handler, answered at routing
 };
 
 class RouteTable {
@@ -24,6 +27,10 @@ class RouteTable {
   void add(std::string path, RouteMethod method) {
     routes_.push_back(
         {std::move(path), method == RouteMethod::get ? "GET, HEAD, OPTIONS" : "POST, OPTIONS"});
+  }
+  void add_calculation(std::string path, api::JsonHandler handler) {
+    add(std::move(path), RouteMethod::post);
+    routes_.back().calculation = handler;
   }
   [[nodiscard]] const std::vector<RouteEntry>& entries() const { return routes_; }
   // The entry for an exact path, or nullptr.

@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <string_view>
+#include <thread>
 #include <utility>
 
 #include "service/unique_fd.h"
@@ -29,6 +31,23 @@ TEST(ConnectionStream, ReadsTheRequestThenReportsItsEnd) {
   EXPECT_FALSE(stream.is_readable());
   // Past the request: the end of the stream, never a wait for the socket.
   EXPECT_EQ(stream.read(buffer, sizeof buffer), 0);
+}
+
+TEST(FramedRequestBody, IsTheThreadsBodyWhileItLivesAndRestoresTheOneBefore) {
+  EXPECT_TRUE(framed_request_body().empty());
+  {
+    const FramedRequestBody outer("{\"a\": 1}");
+    EXPECT_EQ(framed_request_body(), "{\"a\": 1}");
+    {
+      const FramedRequestBody inner("[]");
+      EXPECT_EQ(framed_request_body(), "[]");
+    }
+    EXPECT_EQ(framed_request_body(), "{\"a\": 1}");
+    std::string_view seen_elsewhere = "unset";
+    std::thread([&seen_elsewhere] { seen_elsewhere = framed_request_body(); }).join();
+    EXPECT_TRUE(seen_elsewhere.empty());  // one thread's request is not another's
+  }
+  EXPECT_TRUE(framed_request_body().empty());
 }
 
 TEST(ConnectionStream, GathersWritesIntoTheConnectionsOutput) {

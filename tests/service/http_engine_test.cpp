@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <random>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -179,6 +181,37 @@ TEST(HttpEngine, PipelinedRequestsInRandomSmallPiecesAreAnsweredInOrder) {
     if (random() % 8 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
   expect_answered_in_order(connection.read_responses(100, kTimeoutMs), 100);
+}
+
+TEST(HttpEngine, PipelinedCalculationsEachAnswerTheirOwnBody) {
+  // Calculations are answered from the body the engine framed (framed_request_body()); every
+  // request of a pipeline must see its own, also when the body is empty or chunked.
+  const std::string chunked_feed_025 =
+      "POST /v1/roughness/groove-wall HTTP/1.1\r\nHost: a\r\nContent-Type: application/json\r\n"
+      "Transfer-Encoding: chunked\r\n\r\n"
+      "11\r\n{\"feed_mm\": 0.25,\r\n"
+      "33\r\n \"nose_radius_mm\": 0.8, \"minor_edge_angle_deg\": 10}\r\n0\r\n\r\n";
+  RawConnection connection(TestServer::shared().port());
+  connection.send_all(
+      post_request("/v1/roughness/groove-wall",
+                   R"({"feed_mm": 0.1, "nose_radius_mm": 0.8, "minor_edge_angle_deg": 10})") +
+      post_request("/v1/roughness/groove-wall", "") + chunked_feed_025 +
+      post_request("/v1/roughness/groove-wall",
+                   R"({"feed_mm": 0.2, "nose_radius_mm": 0.8, "minor_edge_angle_deg": 10})"));
+  const ParsedResponses parsed = parse_responses(connection.read_responses(4, kTimeoutMs));
+  ASSERT_EQ(parsed.finals(), 4U);
+  EXPECT_EQ(parsed.responses[1].status, 400) << parsed.responses[1].body;  // empty body
+  double rz_um[3] = {};
+  for (const auto& [response, slot] : {std::pair{0, 0}, std::pair{2, 1}, std::pair{3, 2}}) {
+    const auto& answer = parsed.responses[static_cast<std::size_t>(response)];
+    ASSERT_EQ(answer.status, 200) << answer.body;
+    rz_um[slot] = nlohmann::json::parse(answer.body).at("rz_um").get<double>();
+  }
+  // R3: Rz = rho - sqrt(rho^2 - S^2/4), in micrometres.
+  const auto nose_arc_um = [](double S) { return 1000.0 * (0.8 - std::sqrt(0.64 - S * S / 4)); };
+  EXPECT_NEAR(rz_um[0], nose_arc_um(0.1), 1e-9);
+  EXPECT_NEAR(rz_um[1], nose_arc_um(0.25), 1e-9);
+  EXPECT_NEAR(rz_um[2], nose_arc_um(0.2), 1e-9);
 }
 
 TEST(HttpEngine, ChunkedBodyIsDecodedAndTheConnectionStaysUsable) {
