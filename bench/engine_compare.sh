@@ -34,7 +34,7 @@ done
 command -v wrk >/dev/null || { echo "wrk not found (apt-get install wrk)" >&2; exit 2; }
 [[ $(nproc) -ge 2 ]] || { echo "needs two cores (server and load generator apart)" >&2; exit 2; }
 
-LUA="$(mktemp --suffix=.lua)"
+LUA="$ROOT/bench/wrk_post.lua"  # POSTs the body given after --
 RESULTS="$(mktemp)"
 SERVER_PID=""
 cleanup() {
@@ -42,16 +42,9 @@ cleanup() {
     kill -TERM "$SERVER_PID" 2>/dev/null || true
     wait "$SERVER_PID" 2>/dev/null || true
   fi
-  rm -f "$LUA" "$RESULTS"
+  rm -f "$RESULTS"
 }
 trap cleanup EXIT
-# The request body as a Lua long string, then wrk_post.lua's reporting.
-{
-  echo "wrk.method = \"POST\""
-  echo "wrk.body = [==[$BODY]==]"
-  echo "wrk.headers[\"Content-Type\"] = \"application/json\""
-  sed -n '/^function done/,$p' "$ROOT/bench/wrk_post.lua"
-} >"$LUA"
 
 cpu_ticks() { awk '{print $14 + $15}' "/proc/$SERVER_PID/stat"; }
 
@@ -64,11 +57,11 @@ run() {  # label binary
     curl -s -o /dev/null --max-time 1 "http://127.0.0.1:$port/healthz" && break
     sleep 0.1
   done
-  taskset -c 1 wrk -t2 -c"$CONNS" -d1s -s "$LUA" "http://127.0.0.1:$port$URL_PATH" >/dev/null  # warm-up
+  taskset -c 1 wrk -t2 -c"$CONNS" -d1s -s "$LUA" "http://127.0.0.1:$port$URL_PATH" -- "$BODY" >/dev/null  # warm-up
   local c0 c1 line
   c0="$(cpu_ticks)"
   line="$(taskset -c 1 wrk -t2 -c"$CONNS" -d"${DURATION}s" -s "$LUA" \
-            "http://127.0.0.1:$port$URL_PATH" | sed -n 's/^WRK_RESULT //p')"
+            "http://127.0.0.1:$port$URL_PATH" -- "$BODY" | sed -n 's/^WRK_RESULT //p')"
   c1="$(cpu_ticks)"
   kill -TERM "$SERVER_PID"
   wait "$SERVER_PID" 2>/dev/null || true

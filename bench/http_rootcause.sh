@@ -20,6 +20,7 @@ ECHO_BIN="${HTTPLIB_ECHO_BIN:-$ROOT/build/release/bench/peers/httplib_echo}"
 LUA="$ROOT/bench/wrk_post.lua"
 PROBE="$ROOT/bench/http_probe.py"
 URL_PATH=/v1/entry-length
+BODY='{"cutter_diameter_mm": 20, "offset_mm": 0, "entry": {"contour": "straight", "width_mm": 60, "angle_deg": 90}}'
 SERVER_PID=""
 PORT=""
 
@@ -48,7 +49,7 @@ start() {  # echo arguments...
 }
 
 wrk_line() {  # threads conns seconds -> "rps p50 p99 max non2xx+socket-errors requests"
-  wrk -t"$1" -c"$2" -d"$3s" -s "$LUA" "http://127.0.0.1:$PORT$URL_PATH" 2>/dev/null |
+  wrk -t"$1" -c"$2" -d"$3s" -s "$LUA" "http://127.0.0.1:$PORT$URL_PATH" -- "$BODY" 2>/dev/null |
     sed -n 's/^WRK_RESULT //p' | python3 -c '
 import json, sys
 d = json.loads(sys.stdin.read())
