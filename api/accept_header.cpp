@@ -1,36 +1,20 @@
 #include "api/accept_header.h"
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <optional>
 #include <string>
 
+#include "api/header_text.h"
+
 namespace cutcalc::api {
 namespace {
-
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())) != 0) {
-    text.remove_prefix(1);
-  }
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())) != 0) {
-    text.remove_suffix(1);
-  }
-  return text;
-}
-
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
-}
 
 // The q value of one media range ("text/plain;q=0.5"); 1 when absent, 0 when malformed.
 double quality(std::string_view parameters) {
   while (!parameters.empty()) {
     const auto semicolon = parameters.find(';');
-    const std::string_view parameter = trim(parameters.substr(0, semicolon));
+    const std::string_view parameter = trim_space(parameters.substr(0, semicolon));
     parameters =
         semicolon == std::string_view::npos ? std::string_view{} : parameters.substr(semicolon + 1);
     if (parameter.size() > 2 && (parameter[0] == 'q' || parameter[0] == 'Q') &&
@@ -55,7 +39,7 @@ std::optional<double> named_quality(std::string_view accept, std::string_view me
     const std::string_view range = accept.substr(0, comma);
     accept = comma == std::string_view::npos ? std::string_view{} : accept.substr(comma + 1);
     const auto semicolon = range.find(';');
-    if (iequals(trim(range.substr(0, semicolon)), media_type)) {
+    if (iequals_ascii(trim_space(range.substr(0, semicolon)), media_type)) {
       const double q =
           semicolon == std::string_view::npos ? 1.0 : quality(range.substr(semicolon + 1));
       best = std::max(best.value_or(0.0), q);
@@ -78,10 +62,10 @@ LanguageRank language_rank(std::string_view header, std::string_view language) {
     const std::string_view range = header.substr(0, comma);
     header = comma == std::string_view::npos ? std::string_view{} : header.substr(comma + 1);
     const auto semicolon = range.find(';');
-    const std::string_view tag = trim(range.substr(0, semicolon));
-    const bool names =
-        iequals(tag, language) || (tag.size() > language.size() && tag[language.size()] == '-' &&
-                                   iequals(tag.substr(0, language.size()), language));
+    const std::string_view tag = trim_space(range.substr(0, semicolon));
+    const bool names = iequals_ascii(tag, language) ||
+                       (tag.size() > language.size() && tag[language.size()] == '-' &&
+                        iequals_ascii(tag.substr(0, language.size()), language));
     if (names) {
       const double q =
           semicolon == std::string_view::npos ? 1.0 : quality(range.substr(semicolon + 1));

@@ -1,5 +1,6 @@
 #include "api/field_reader.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cutcalc::api {
@@ -86,12 +87,15 @@ bool ObjectReader::has(std::string_view key) const {
 }
 
 const nlohmann::json* ObjectReader::find(std::string_view key) {
-  asked_.emplace(key);
   if (object_ == nullptr) {
     return nullptr;
   }
   const auto it = object_->find(key);
-  return it == object_->end() ? nullptr : &*it;
+  if (it == object_->end()) {
+    return nullptr;
+  }
+  asked_.push_back(&*it);
+  return &*it;
 }
 
 std::string ObjectReader::child_pointer(std::string_view key) const {
@@ -103,7 +107,7 @@ void ObjectReader::add_error(std::string_view key, ErrorCode code, nlohmann::jso
 }
 
 void ObjectReader::reject(std::string_view key, ErrorCode code, nlohmann::json params) {
-  asked_.emplace(key);
+  find(key);  // reported here, so not again as unknown
   add_error(key, code, std::move(params));
 }
 
@@ -135,7 +139,6 @@ std::optional<double> ObjectReader::check_number(std::string_view key, const nlo
 
 std::optional<double> ObjectReader::required_number(std::string_view key, const Bounds& bounds) {
   if (present() && !has(key)) {
-    asked_.emplace(key);
     add_error(key, ErrorCode::required);
     return std::nullopt;
   }
@@ -243,7 +246,6 @@ std::optional<std::string> ObjectReader::optional_string(std::string_view key) {
 std::optional<std::string> ObjectReader::required_choice(
     std::string_view key, std::initializer_list<std::string_view> allowed) {
   if (present() && !has(key)) {
-    asked_.emplace(key);
     add_error(key, ErrorCode::required_choice, {{"allowed", list_of(allowed)}});
     return std::nullopt;
   }
@@ -266,9 +268,9 @@ void ObjectReader::reject_unknown_fields() {
   if (object_ == nullptr) {
     return;
   }
-  for (const auto& [key, value] : object_->items()) {
-    if (asked_.find(key) == asked_.end()) {
-      add_error(key, ErrorCode::unknown_field);
+  for (auto member = object_->begin(); member != object_->end(); ++member) {
+    if (std::find(asked_.begin(), asked_.end(), &*member) == asked_.end()) {
+      add_error(member.key(), ErrorCode::unknown_field);
     }
   }
 }

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -109,7 +108,8 @@ class ObjectReader {
   const nlohmann::json* object_ = nullptr;
   std::string pointer_;
   std::vector<FieldError>* errors_;
-  std::set<std::string, std::less<>> asked_;
+  // The members asked for (a few per object: a linear search beats a set of key copies).
+  std::vector<const nlohmann::json*> asked_;
 };
 
 // Reads the request root: it must be a JSON object (pointer "").

@@ -1,10 +1,11 @@
 #include "api/json_body.h"
 
 #include <algorithm>
-#include <cctype>
 #include <set>
 #include <string>
 #include <vector>
+
+#include "api/header_text.h"
 
 namespace cutcalc::api {
 namespace {
@@ -14,21 +15,11 @@ struct Rejected {
   Message why;
 };
 
-std::string lower_trimmed(std::string_view text) {
-  const auto not_space = [](unsigned char c) { return std::isspace(c) == 0; };
-  const auto begin = std::find_if(text.begin(), text.end(), not_space);
-  const auto end = std::find_if(text.rbegin(), text.rend(), not_space).base();
-  std::string out(begin, begin < end ? end : begin);
-  std::transform(out.begin(), out.end(), out.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
 }  // namespace
 
 bool is_json_media_type(std::string_view content_type) {
-  const std::string_view media = content_type.substr(0, content_type.find(';'));
-  return lower_trimmed(media) == "application/json";
+  return iequals_ascii(trim_space(content_type.substr(0, content_type.find(';'))),
+                       "application/json");
 }
 
 namespace {

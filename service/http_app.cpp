@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api/accept_header.h"
+#include "api/header_text.h"
 #include "api/json_endpoint.h"
 #include "api/problem.h"
 #include "api/routes.h"
@@ -38,12 +39,49 @@ thread_local RequestState t_request;
 constexpr const char* kRequestIdHeader = "X-Request-Id";
 constexpr const char* kNoSniffHeader = "X-Content-Type-Options";
 
-void write(httplib::Response& res, const api::ApiResponse& response) {
+void write(httplib::Response& res, api::ApiResponse&& response) {
   res.status = response.status;
   for (const auto& [name, value] : response.headers) {
     res.set_header(name, value);
   }
-  res.set_content(response.body, response.content_type.c_str());
+  // As set_content() does (the library has no overload that takes the body by move).
+  res.body = std::move(response.body);
+  res.set_header("Content-Type", response.content_type);
+}
+
+// The request headers cutcalc reads, each the first of its name (as get_header_value() gives),
+// found in one pass: the library's lookups compare names through a libc call per character.
+struct ReadHeaders {
+  std::string_view content_type;
+  std::string_view accept;
+  std::string_view accept_language;
+  std::string_view request_id;
+};
+
+ReadHeaders read_headers(const httplib::Request& req) {
+  ReadHeaders read;
+  bool content_type = false;
+  bool accept = false;
+  bool accept_language = false;
+  bool request_id = false;
+  const auto take = [](bool& taken, std::string_view& into, const std::string& value) {
+    if (!taken) {
+      taken = true;
+      into = value;
+    }
+  };
+  for (const auto& [name, value] : req.headers) {
+    if (api::iequals_ascii(name, "Content-Type")) {
+      take(content_type, read.content_type, value);
+    } else if (api::iequals_ascii(name, "Accept")) {
+      take(accept, read.accept, value);
+    } else if (api::iequals_ascii(name, "Accept-Language")) {
+      take(accept_language, read.accept_language, value);
+    } else if (api::iequals_ascii(name, kRequestIdHeader)) {
+      take(request_id, read.request_id, value);
+    }
+  }
+  return read;
 }
 
 // The problem's `instance` of a request: the path of its target
@@ -69,7 +107,7 @@ std::string problem_instance(std::string_view target) {
 }
 
 api::Language language_of(const httplib::Request& req) {
-  return api::preferred_language(req.get_header_value("Accept-Language"));
+  return api::preferred_language(read_headers(req).accept_language);
 }
 
 void write_problem(const httplib::Request& req, httplib::Response& res,
@@ -170,8 +208,12 @@ void HttpApp::install_middleware() {
     // Set per response: the library's set_default_headers() broke every response of the -O3
     // build against Debian's libcpp-httplib 0.11.4 (empty replies), while the ASan build worked.
     res.set_header(kNoSniffHeader, "nosniff");
-    const std::string client_id = req.get_header_value(kRequestIdHeader);
-    t_request.request_id = is_acceptable_request_id(client_id) ? client_id : generate_request_id();
+    const ReadHeaders headers = read_headers(req);
+    if (is_acceptable_request_id(headers.request_id)) {
+      t_request.request_id = headers.request_id;
+    } else {
+      t_request.request_id = generate_request_id();
+    }
     res.set_header(kRequestIdHeader, t_request.request_id);
 
     // Once per response, whatever answers it (set_header appends, so a second call repeats them).
@@ -200,8 +242,8 @@ void HttpApp::install_middleware() {
       // Answered here, from the body the engine framed: the library would otherwise match every
       // route's regex and copy the body first.
       write(res, api::run_json_endpoint(
-                     {req.path, req.get_header_value("Content-Type"), framed_request_body(),
-                      t_request.request_id, req.get_header_value("Accept"), language_of(req)},
+                     {req.path, headers.content_type, framed_request_body(), t_request.request_id,
+                      headers.accept, api::preferred_language(headers.accept_language)},
                      route->calculation));
       return httplib::Server::HandlerResponse::Handled;
     }

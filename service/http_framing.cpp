@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "api/header_text.h"
+
 namespace cutcalc::service {
 namespace {
 
@@ -56,13 +58,6 @@ std::string_view trim(std::string_view text) {
   while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
   while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
   return text;
-}
-
-bool iequals(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; };
-           return lower(x) == lower(y);
-         });
 }
 
 int hex_digit(char c) {
@@ -239,11 +234,11 @@ RequestFrame classify_request(std::string_view input, const FramingLimits& limit
   const std::string_view target = request_line.substr(space1 + 1, space2 - space1 - 1);
   const std::string_view version = request_line.substr(space2 + 1);
   // origin-form, absolute-form or asterisk-form (RFC 9112 3.2), visible ASCII, no fragment.
-  const bool target_ok =
-      (target.front() == '/' || target == "*" || iequals(target.substr(0, 7), "http://") ||
-       iequals(target.substr(0, 8), "https://")) &&
-      std::all_of(target.begin(), target.end(),
-                  [](char c) { return c > 0x20 && c < 0x7f && c != '#'; });
+  const bool target_ok = (target.front() == '/' || target == "*" ||
+                          api::iequals_ascii(target.substr(0, 7), "http://") ||
+                          api::iequals_ascii(target.substr(0, 8), "https://")) &&
+                         std::all_of(target.begin(), target.end(),
+                                     [](char c) { return c > 0x20 && c < 0x7f && c != '#'; });
   if (!is_token(method) || !target_ok) return reject(frame, 400, "malformed request line");
   if (request_line.size() > limits.max_request_line_bytes) {
     return reject(frame, 400, "the request line is over the size limit");
@@ -275,11 +270,11 @@ RequestFrame classify_request(std::string_view input, const FramingLimits& limit
       return reject(frame, 400, "a header field line is over the size limit");
     }
     if (++fields > limits.max_fields) return reject(frame, 400, "too many header fields");
-    if (iequals(name, "content-length")) {
+    if (api::iequals_ascii(name, "content-length")) {
       if (!parse_content_length(value, has_length, length)) {
         return reject(frame, 400, "Content-Length must be one number (digits only)");
       }
-    } else if (iequals(name, "transfer-encoding")) {
+    } else if (api::iequals_ascii(name, "transfer-encoding")) {
       has_transfer_encoding = true;
       std::string_view rest = value;
       do {
@@ -288,12 +283,13 @@ RequestFrame classify_request(std::string_view input, const FramingLimits& limit
         rest = comma == npos ? std::string_view{} : rest.substr(comma + 1);
         if (coding.empty()) continue;
         ++codings;
-        only_chunked = only_chunked && iequals(coding, "chunked");
+        only_chunked = only_chunked && api::iequals_ascii(coding, "chunked");
       } while (!rest.empty());
-    } else if (iequals(name, "host")) {
+    } else if (api::iequals_ascii(name, "host")) {
       ++hosts;
-    } else if (iequals(name, "expect")) {
-      frame.expects_continue = frame.expects_continue || (http11 && iequals(value, "100-continue"));
+    } else if (api::iequals_ascii(name, "expect")) {
+      frame.expects_continue =
+          frame.expects_continue || (http11 && api::iequals_ascii(value, "100-continue"));
     }
   }
   frame.head_bytes = pos - start;
@@ -340,7 +336,8 @@ std::string_view library_request(std::string_view input, const RequestFrame& fra
     std::string_view name;
     std::string_view value;
     split_field(line, name, value);
-    if (iequals(name, "transfer-encoding") || iequals(name, "expect")) continue;
+    if (api::iequals_ascii(name, "transfer-encoding") || api::iequals_ascii(name, "expect"))
+      continue;
     scratch.append(line).append("\r\n");
   }
   if (!frame.chunked) {

@@ -214,6 +214,23 @@ TEST(HttpEngine, PipelinedCalculationsEachAnswerTheirOwnBody) {
   EXPECT_NEAR(rz_um[2], nose_arc_um(0.2), 1e-9);
 }
 
+TEST(HttpEngine, HeadersAreReadInAnyCaseAndTheFirstOfANameCounts) {
+  RawConnection connection(TestServer::shared().port());
+  const std::string out_of_range =
+      R"({"feed_mm": -1, "nose_radius_mm": 0.8, "minor_edge_angle_deg": 10})";
+  connection.send_all(
+      "POST /v1/roughness/groove-wall HTTP/1.1\r\nHost: a\r\ncontent-TYPE: Application/JSON\r\n"
+      "x-request-id: first-id\r\nX-Request-Id: second-id\r\nACCEPT-LANGUAGE: ru\r\n"
+      "Accept-Language: en\r\nContent-Length: " +
+      std::to_string(out_of_range.size()) + "\r\n\r\n" + out_of_range);
+  const ParsedResponses parsed = parse_responses(connection.read_responses(1, kTimeoutMs));
+  ASSERT_EQ(parsed.finals(), 1U);
+  const auto& answer = parsed.responses[0];
+  EXPECT_EQ(answer.status, 422) << answer.body;
+  EXPECT_EQ(answer.header("x-request-id"), "first-id");
+  EXPECT_EQ(answer.header("content-language"), "ru");
+}
+
 TEST(HttpEngine, ChunkedBodyIsDecodedAndTheConnectionStaysUsable) {
   RawConnection connection(TestServer::shared().port());
   const std::size_t half = kGroove.size() / 2;
