@@ -3,14 +3,19 @@
 namespace cutcalc::api::entry {
 
 nlohmann::json to_json(const domain::entry::Position& position) {
-  return {{"x_mm", position.x_mm}, {"y_mm", position.y_mm}};
+  // Member by member: a brace list builds each member through a temporary array (issue 14).
+  nlohmann::json position_json = nlohmann::json::object();
+  position_json["x_mm"] = position.x_mm;
+  position_json["y_mm"] = position.y_mm;
+  return position_json;
 }
 
 nlohmann::json to_json(const domain::entry::EntryLengthResult& result) {
-  nlohmann::json body = {{"engagement_length_mm", result.engagement_length_mm},
-                         {"entry_length_mm", result.entry_length_mm},
-                         {"start", to_json(result.start)},
-                         {"steady_width_mm", result.steady_width_mm}};
+  nlohmann::json body = nlohmann::json::object();
+  body["engagement_length_mm"] = result.engagement_length_mm;
+  body["entry_length_mm"] = result.entry_length_mm;
+  body["start"] = to_json(result.start);
+  body["steady_width_mm"] = result.steady_width_mm;
   if (result.exit) {
     body["end"] = to_json(result.exit->end);
     body["working_stroke_mm"] = result.exit->working_stroke_mm;
@@ -75,18 +80,20 @@ nlohmann::json to_json(const domain::entry::EntryScheme& scheme) {
 namespace {
 
 nlohmann::json to_json(const domain::entry::LateralPass& pass) {
-  return {{"width_mm", pass.width_mm},
-          {"axis_y_mm", pass.axis_y_mm},
-          {"offset_mm", pass.offset_mm},
-          {"strip_width_mm", pass.strip_width_mm},
-          {"engagement_length_mm", pass.engagement_length_mm},
-          {"entry_length_mm", pass.entry_length_mm},
-          {"start", entry::to_json(pass.start)},
-          {"end", entry::to_json(pass.end)},
-          {"working_stroke_mm", pass.working_stroke_mm},
-          {"entry_time_min", pass.entry_time_min},
-          {"steady_time_min", pass.steady_time_min},
-          {"time_min", pass.time_min}};
+  nlohmann::json out = nlohmann::json::object();
+  out["width_mm"] = pass.width_mm;
+  out["axis_y_mm"] = pass.axis_y_mm;
+  out["offset_mm"] = pass.offset_mm;
+  out["strip_width_mm"] = pass.strip_width_mm;
+  out["engagement_length_mm"] = pass.engagement_length_mm;
+  out["entry_length_mm"] = pass.entry_length_mm;
+  out["start"] = entry::to_json(pass.start);
+  out["end"] = entry::to_json(pass.end);
+  out["working_stroke_mm"] = pass.working_stroke_mm;
+  out["entry_time_min"] = pass.entry_time_min;
+  out["steady_time_min"] = pass.steady_time_min;
+  out["time_min"] = pass.time_min;
+  return out;
 }
 
 }  // namespace
@@ -96,15 +103,17 @@ nlohmann::json to_json(const domain::entry::MainTimeResult& result) {
   for (const auto& pass : result.lateral_passes) {
     passes.push_back(to_json(pass));
   }
-  return {{"spindle_speed_rpm", result.spindle_speed_rpm},
-          {"feed_per_rev_mm", result.feed_per_rev_mm},
-          {"feed_mm_per_min", result.feed_mm_per_min},
-          {"entry_feed_mm_per_min", result.entry_feed_mm_per_min},
-          {"depth_passes_mm", result.depth_passes_mm},
-          {"lateral_passes", std::move(passes)},
-          {"main_time_min", result.main_time_min},
-          {"entry_time_min", result.entry_time_min},
-          {"steady_time_min", result.steady_time_min}};
+  nlohmann::json out = nlohmann::json::object();
+  out["spindle_speed_rpm"] = result.spindle_speed_rpm;
+  out["feed_per_rev_mm"] = result.feed_per_rev_mm;
+  out["feed_mm_per_min"] = result.feed_mm_per_min;
+  out["entry_feed_mm_per_min"] = result.entry_feed_mm_per_min;
+  out["depth_passes_mm"] = result.depth_passes_mm;
+  out["lateral_passes"] = std::move(passes);
+  out["main_time_min"] = result.main_time_min;
+  out["entry_time_min"] = result.entry_time_min;
+  out["steady_time_min"] = result.steady_time_min;
+  return out;
 }
 
 }  // namespace cutcalc::api::entry

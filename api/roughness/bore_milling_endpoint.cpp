@@ -27,11 +27,14 @@ HandlerOutcome handle_bore_milling(const nlohmann::json& body) {
     return to_problem(result.error());
   }
   const auto& cusp = result.value();
-  return nlohmann::json{{"cusp_height_um", cusp.cusp_height_um},
-                        {"approximate_cusp_height_um", cusp.approximate_cusp_height_um},
-                        {"feed_per_tooth_mm", cusp.feed_per_tooth_mm},
-                        {"feed_per_tooth_on_bore_mm", cusp.feed_per_tooth_on_bore_mm},
-                        {"pitch_angle_deg", cusp.pitch_angle_deg}};
+  // Member by member: a brace list builds each member through a temporary array (issue 14).
+  nlohmann::json out = nlohmann::json::object();
+  out["cusp_height_um"] = cusp.cusp_height_um;
+  out["approximate_cusp_height_um"] = cusp.approximate_cusp_height_um;
+  out["feed_per_tooth_mm"] = cusp.feed_per_tooth_mm;
+  out["feed_per_tooth_on_bore_mm"] = cusp.feed_per_tooth_on_bore_mm;
+  out["pitch_angle_deg"] = cusp.pitch_angle_deg;
+  return out;
 }
 
 }  // namespace cutcalc::api::roughness

@@ -64,8 +64,10 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
   if (!result.ok()) {
     return to_problem(result.error());
   }
-  nlohmann::json out = {{"rz_um", result.value().rz_um},
-                        {"branch", to_string(result.value().branch)}};
+  // Member by member: a brace list builds each member through a temporary array (issue 14).
+  nlohmann::json out = nlohmann::json::object();
+  out["rz_um"] = result.value().rz_um;
+  out["branch"] = to_string(result.value().branch);
   if (result.value().max_feed_mm) {
     out["max_feed_mm"] = *result.value().max_feed_mm;
   }
