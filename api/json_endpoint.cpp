@@ -52,15 +52,17 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
     nlohmann::json json_form = std::move(document->json);  // moved out before the variant changes
     outcome = std::move(json_form);
   }
-  const auto& body = std::get<nlohmann::json>(outcome);
-  if (!all_numbers_finite(body)) {
+  auto* text = std::get_if<JsonText>(&outcome);
+  const auto* body = std::get_if<nlohmann::json>(&outcome);
+  if (text != nullptr ? !text->all_finite : !all_numbers_finite(*body)) {
     spdlog::error("non-finite number in the response of {} (request {}): {}", instance, request_id,
                   std::string(request.body.substr(0, 4096)));
     return problem_response(
         Problem{ProblemKind::internal_error, Message{ErrorCode::internal_error}, {}}, instance,
         request_id, request.language);
   }
-  return ApiResponse{200, "application/json", body.dump(), {}};
+  return ApiResponse{
+      200, "application/json", text != nullptr ? std::move(text->text) : body->dump(), {}};
 }
 
 }  // namespace cutcalc::api

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api/api_response.h"
+#include "api/json_writer.h"
 #include "api/problem.h"
 
 namespace cutcalc::api {
@@ -28,7 +29,8 @@ struct JsonWithText {
   std::string file_name;  // for Content-Disposition: attachment
 };
 
-using HandlerOutcome = std::variant<nlohmann::json, Problem, JsonWithText>;
+// JsonText: an answer written straight to text (api/json_writer.h), for the hottest endpoints.
+using HandlerOutcome = std::variant<nlohmann::json, Problem, JsonWithText, JsonText>;
 using JsonHandler = HandlerOutcome (*)(const nlohmann::json& body);
 
 ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler);

@@ -4,17 +4,20 @@
 # that drift of a noisy machine falls on both. Reports per round and as medians: requests/s,
 # p50/p99 latency, the server's CPU per request (user + system, from /proc), and the B/A ratios.
 #
-# usage: bench/engine_compare.sh --baseline PATH --candidate PATH [--path P] [--body JSON]
+# usage: bench/engine_compare.sh --baseline PATH --candidate PATH
+#                                [--scenario groove-wall|entry-length | --path P --body JSON]
 #                                [--conns N] [--duration S] [--rounds N]
-#   defaults: POST /v1/roughness/groove-wall with a valid body, 64 connections, 10 s, 6 rounds.
+#   defaults: the groove-wall scenario of bench/scenarios.sh, 64 connections, 10 s, 6 rounds.
 # Loopback only; each run is bounded by --duration; servers are stopped on exit.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BASELINE=""
 CANDIDATE=""
-URL_PATH=/v1/roughness/groove-wall
-BODY='{"feed_mm": 0.2, "nose_radius_mm": 0.8, "minor_edge_angle_deg": 10}'
+# shellcheck source=bench/scenarios.sh
+source "$ROOT/bench/scenarios.sh"
+URL_PATH="${SCENARIO_PATH[groove-wall]}"
+BODY="${SCENARIO_BODY[groove-wall]}"
 CONNS=64
 DURATION=10
 ROUNDS=6
@@ -22,6 +25,9 @@ while [[ $# -gt 0 ]]; do
   case "$1" in
     --baseline) BASELINE="$2"; shift 2 ;;
     --candidate) CANDIDATE="$2"; shift 2 ;;
+    --scenario)
+      [[ -n "${SCENARIO_PATH[$2]:-}" ]] || { echo "engine_compare: --scenario: one of ${SCENARIOS[*]}" >&2; exit 2; }
+      URL_PATH="${SCENARIO_PATH[$2]}"; BODY="${SCENARIO_BODY[$2]}"; shift 2 ;;
     --path) URL_PATH="$2"; shift 2 ;;
     --body) BODY="$2"; shift 2 ;;
     --conns) CONNS="$2"; shift 2 ;;

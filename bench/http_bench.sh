@@ -73,15 +73,8 @@ ENDPOINT_TABLE=0
 STRICT=0
 
 # The scenarios: name, path, body (wrk_post.lua sends the body; the peers compute the same answer).
-SCENARIOS=(groove-wall entry-length)
-declare -A SCENARIO_PATH=(
-  [groove-wall]=/v1/roughness/groove-wall
-  [entry-length]=/v1/entry-length
-)
-declare -A SCENARIO_BODY=(
-  [groove-wall]='{"feed_mm": 0.2, "nose_radius_mm": 0.8, "minor_edge_angle_deg": 10}'
-  [entry-length]='{"cutter_diameter_mm": 20, "offset_mm": 0, "entry": {"contour": "straight", "width_mm": 60, "angle_deg": 90}}'
-)
+# shellcheck source=bench/scenarios.sh
+source "$ROOT/bench/scenarios.sh"
 TARGETS=(cutcalc echo nginx node fastapi)
 
 die() { echo "http_bench: $*" >&2; exit 2; }

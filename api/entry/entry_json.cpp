@@ -10,17 +10,40 @@ nlohmann::json to_json(const domain::entry::Position& position) {
   return position_json;
 }
 
-nlohmann::json to_json(const domain::entry::EntryLengthResult& result) {
-  nlohmann::json body = nlohmann::json::object();
-  body["engagement_length_mm"] = result.engagement_length_mm;
-  body["entry_length_mm"] = result.entry_length_mm;
-  body["start"] = to_json(result.start);
-  body["steady_width_mm"] = result.steady_width_mm;
+namespace {
+
+void write_position(JsonWriter& out, const domain::entry::Position& position) {
+  out.begin_object();
+  out.member("x_mm", position.x_mm);
+  out.member("y_mm", position.y_mm);
+  out.end_object();
+}
+
+}  // namespace
+
+// Written straight to text (the hottest answer), members in key order.
+JsonText entry_length_answer(const domain::entry::EntryLengthResult& result,
+                             const nlohmann::json* scheme) {
+  JsonWriter out;
+  out.begin_object();
   if (result.exit) {
-    body["end"] = to_json(result.exit->end);
-    body["working_stroke_mm"] = result.exit->working_stroke_mm;
+    out.key("end");
+    write_position(out, result.exit->end);
   }
-  return body;
+  out.member("engagement_length_mm", result.engagement_length_mm);
+  out.member("entry_length_mm", result.entry_length_mm);
+  if (scheme != nullptr) {
+    out.key("scheme");
+    out.document(*scheme);
+  }
+  out.key("start");
+  write_position(out, result.start);
+  out.member("steady_width_mm", result.steady_width_mm);
+  if (result.exit) {
+    out.member("working_stroke_mm", result.exit->working_stroke_mm);
+  }
+  out.end_object();
+  return std::move(out).finish();
 }
 
 namespace {

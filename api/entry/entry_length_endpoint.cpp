@@ -61,15 +61,15 @@ HandlerOutcome handle_entry_length(const nlohmann::json& body) {
   if (!result.ok()) {
     return to_problem(result.error());
   }
-  nlohmann::json answer = to_json(result.value());
-  if (request.include_scheme) {
-    const auto scheme = domain::entry::entry_scheme(request.params, result.value());
-    if (!scheme.ok()) {
-      return to_problem(scheme.error());
-    }
-    answer["scheme"] = to_json(scheme.value());
+  if (!request.include_scheme) {
+    return entry_length_answer(result.value(), nullptr);
   }
-  return answer;
+  const auto scheme = domain::entry::entry_scheme(request.params, result.value());
+  if (!scheme.ok()) {
+    return to_problem(scheme.error());
+  }
+  const nlohmann::json scheme_json = to_json(scheme.value());
+  return entry_length_answer(result.value(), &scheme_json);
 }
 
 }  // namespace cutcalc::api::entry
