@@ -1,6 +1,7 @@
 // What every browser test shares: its environment, the repository, the reference cases and Debian's
 // Chromium driven by playwright-core (tools/e2e; never a downloaded browser).
 import { readFileSync } from 'node:fs';
+import { after, before } from 'node:test';
 import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -18,3 +19,15 @@ export const REFERENCE_DIR = path.resolve(repo, env('CUTCALC_REFERENCE_DIR', pat
 export const reference = name => JSON.parse(readFileSync(path.join(REFERENCE_DIR, name), 'utf8'));
 export const CHROMIUM = env('CHROMIUM_PATH', '/usr/bin/chromium');
 export const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'];
+// Debian's Chromium, headless: one per test file, launched before its tests and closed after
+// them. Returns a getter (the browser exists once the file's tests start).
+export function chromiumForThisFile() {
+  let browser;
+  before(async () => {
+    browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, timeout: 60000 });
+  });
+  after(async () => {
+    await browser?.close();
+  });
+  return () => browser;
+}

@@ -33,7 +33,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 
-import { CHROMIUM, CHROMIUM_ARGS, chromium, env, reference, repo } from './browser.mjs';
+import { env, chromiumForThisFile, reference, repo } from './browser.mjs';
 
 const API = (env('CUTCALC_URL') ?? '').replace(/\/$/, '');
 if (!API) throw new Error('CUTCALC_URL is not set (the base URL of a running cutcalc)');
@@ -652,17 +652,11 @@ function assertDimension(diagram, role, parts, want, label) {
 }
 
 // ------------------------------------------------------------------ the browser
-let browser;
-before(async () => {
-  mkdirSync(ARTIFACT_DIR, { recursive: true });
-  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, timeout: 60000 });
-});
-after(async () => {
-  await browser?.close();
-});
+const browser = chromiumForThisFile();
+before(() => mkdirSync(ARTIFACT_DIR, { recursive: true }));
 
 async function openPage(viewport, label) {
-  const context = await browser.newContext({ viewport, acceptDownloads: true });
+  const context = await browser().newContext({ viewport, acceptDownloads: true });
   const page = await context.newPage();
   page.setDefaultTimeout(WAIT_MS);
   const log = observe(page, label);

@@ -18,7 +18,7 @@ import { readdirSync } from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
 
-import { CHROMIUM, CHROMIUM_ARGS, REFERENCE_DIR, chromium, env, reference, repo } from './browser.mjs';
+import { REFERENCE_DIR, env, chromiumForThisFile, reference, repo } from './browser.mjs';
 
 const BIN = path.resolve(repo, env('CUTCALC_BIN', path.join('build', 'release', 'service', 'cutcalc')));
 const TEST_MS = 120000;
@@ -99,7 +99,7 @@ const postFromPage = (page, url, body, requestId) =>
     { url, body, requestId },
   );
 
-let browser;
+const browser = chromiumForThisFile();
 let allowed;
 let other;
 let service;
@@ -107,17 +107,15 @@ before(async () => {
   allowed = await pageServer();
   other = await pageServer();
   service = await startCutcalc(allowed.origin);
-  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, timeout: 60000 });
 });
 after(async () => {
-  await browser?.close();
   service?.child.kill('SIGTERM');
   allowed?.server.close();
   other?.server.close();
 });
 
 async function openPage(origin) {
-  const context = await browser.newContext();
+  const context = await browser().newContext();
   const page = await context.newPage();
   const consoleErrors = [];
   page.on('console', msg => {

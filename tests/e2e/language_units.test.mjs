@@ -19,13 +19,13 @@
 //
 // Environment: CUTCALC_URL (required), E2E_PAGE_URL, E2E_ARTIFACT_DIR, CHROMIUM_PATH, as in
 // calculator.test.mjs.
-import { after, before, describe, test } from 'node:test';
+import { before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 
-import { CHROMIUM, CHROMIUM_ARGS, chromium, env, repo } from './browser.mjs';
-import { API, ARTIFACT_DIR, PAGE_URL, QUIET_MS, TEST_MS, WAIT_MS, assertClean, settle } from './page_session.mjs';
+import { env, chromiumForThisFile, repo } from './browser.mjs';
+import { API, ARTIFACT_DIR, PAGE_URL, TEST_MS, assertClean, openRecordedPage, settle } from './page_session.mjs';
 
 const SECTIONS = ['entry', 'speeds', 'groove', 'bore', 'polygon'];
 const SECTION_PATHS = {
@@ -47,69 +47,11 @@ const catalogue = async name => {
 };
 const CATALOGUES = { en: await catalogue('en'), ru: await catalogue('ru') };
 
-let browser;
-before(async () => {
-  mkdirSync(ARTIFACT_DIR, { recursive: true });
-  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, timeout: 60000 });
-});
-after(async () => {
-  await browser?.close();
-});
+const browser = chromiumForThisFile();
+before(() => mkdirSync(ARTIFACT_DIR, { recursive: true }));
 
 // ------------------------------------------------------------------ a page and what happens on it
-async function openPage(url, viewport = { width: 1280, height: 900 }) {
-  const context = await browser.newContext({ viewport, acceptDownloads: true });
-  const page = await context.newPage();
-  page.setDefaultTimeout(WAIT_MS);
-  const log = { exchanges: [], problems: [], inFlight: 0, lastActivity: Date.now() };
-  await page.addInitScript(() => {
-    window.__cspViolations = [];
-    document.addEventListener('securitypolicyviolation', e =>
-      window.__cspViolations.push(`${e.violatedDirective} ${e.blockedURI}`),
-    );
-  });
-  page.on('console', msg => {
-    if (msg.type() === 'error') log.problems.push(`console error: ${msg.text()}`);
-  });
-  page.on('pageerror', error => log.problems.push(`page error: ${error.message}`));
-  page.on('request', request => {
-    log.inFlight += 1;
-    log.lastActivity = Date.now();
-    const u = new URL(request.url());
-    if (request.method() === 'POST' && u.pathname.startsWith('/v1/')) {
-      const entry = { path: u.pathname, body: request.postData() ?? '', headers: request.headers(), status: 0, json: null };
-      entry.done = request
-        .response()
-        .then(async response => {
-          entry.status = response?.status() ?? 0;
-          entry.language = response?.headers()['content-language'];
-          try {
-            entry.json = JSON.parse((await response?.text()) ?? '');
-          } catch {
-            entry.json = null;
-          }
-        })
-        .catch(() => {});
-      log.exchanges.push(entry);
-    }
-  });
-  const finished = () => {
-    log.inFlight -= 1;
-    log.lastActivity = Date.now();
-  };
-  page.on('requestfinished', finished);
-  page.on('requestfailed', request => {
-    finished();
-    log.problems.push(`request failed: ${request.method()} ${request.url()}: ${request.failure()?.errorText}`);
-  });
-  page.on('response', response => {
-    // The problem answers this test asks for on purpose (an invalid input) are expected.
-    if (response.status() >= 400 && !log.expectProblems) log.problems.push(`HTTP ${response.status()} for ${response.url()}`);
-  });
-  const response = await page.goto(url, { waitUntil: 'load' });
-  assert.equal(response?.status(), 200, `GET ${url}`);
-  return { context, page, log };
-}
+const openPage = (url, viewport) => openRecordedPage(browser(), url, { viewport });
 
 
 

@@ -1,6 +1,6 @@
 // What the page tests (shop_tool, language_units, print_sheet) share: the running cutcalc, where
-// artifacts go, and how long to wait for the page's requests, plus the two checks every one of them
-// runs on a page. Each test opens its page itself: they record different things about it.
+// artifacts go, how long to wait for the page's requests, a page that records them, and the two
+// checks every one of them runs on a page (print_sheet opens its page itself: it stubs printing).
 import assert from 'node:assert/strict';
 import path from 'node:path';
 
@@ -33,4 +33,66 @@ export async function settle(log) {
 export async function assertClean(page, log, label) {
   const csp = await page.evaluate(() => window.__cspViolations ?? []);
   assert.deepEqual([...log.problems, ...csp.map(v => `CSP violation: ${v}`)], [], `${label}: trouble on the page`);
+}
+
+// Opens `url` in a new context of `browser` and records every API exchange, in the order the
+// requests were sent (path, url, body, request headers; once answered: status, Content-Language,
+// text, json), and every sign of trouble: console and page errors, failed requests, HTTP errors
+// (except while log.expectProblems is set, for answers a test asks for on purpose) and CSP
+// violations (read by assertClean). `clipboard`: the page may read and write the clipboard.
+export async function openRecordedPage(browser, url, { viewport = { width: 1280, height: 900 }, clipboard = false } = {}) {
+  const context = await browser.newContext({ viewport, acceptDownloads: true });
+  if (clipboard) await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(API).origin });
+  const page = await context.newPage();
+  page.setDefaultTimeout(WAIT_MS);
+  const log = { exchanges: [], problems: [], inFlight: 0, lastActivity: Date.now(), expectProblems: false };
+  await page.addInitScript(() => {
+    window.__cspViolations = [];
+    document.addEventListener('securitypolicyviolation', e =>
+      window.__cspViolations.push(`${e.violatedDirective} ${e.blockedURI}`),
+    );
+  });
+  page.on('console', msg => {
+    if (msg.type() === 'error') log.problems.push(`console error: ${msg.text()}`);
+  });
+  page.on('pageerror', error => log.problems.push(`page error: ${error.message}`));
+  page.on('request', request => {
+    log.inFlight += 1;
+    log.lastActivity = Date.now();
+    const u = new URL(request.url());
+    if (request.method() === 'POST' && u.pathname.startsWith('/v1/')) {
+      const entry = { path: u.pathname, url: request.url(), body: request.postData() ?? '', headers: request.headers(), status: 0, json: null };
+      entry.done = request
+        .response()
+        .then(async response => {
+          entry.status = response?.status() ?? 0;
+          entry.language = response?.headers()['content-language'];
+          entry.text = (await response?.text()) ?? '';
+          try {
+            entry.json = JSON.parse(entry.text);
+          } catch {
+            entry.json = null;
+          }
+        })
+        .catch(() => {});
+      log.exchanges.push(entry);
+    }
+  });
+  const finished = () => {
+    log.inFlight -= 1;
+    log.lastActivity = Date.now();
+  };
+  page.on('requestfinished', finished);
+  page.on('requestfailed', request => {
+    finished();
+    log.problems.push(`request failed: ${request.method()} ${request.url()}: ${request.failure()?.errorText}`);
+  });
+  page.on('response', response => {
+    if (response.status() >= 400 && !log.expectProblems) {
+      log.problems.push(`HTTP ${response.status()} for ${response.request().method()} ${response.url()}`);
+    }
+  });
+  const response = await page.goto(url, { waitUntil: 'load' });
+  assert.equal(response?.status(), 200, `GET ${url}`);
+  return { context, page, log };
 }

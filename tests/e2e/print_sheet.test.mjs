@@ -28,7 +28,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 
-import { CHROMIUM, CHROMIUM_ARGS, chromium, env, repo } from './browser.mjs';
+import { env, chromiumForThisFile, repo } from './browser.mjs';
 import { API, ARTIFACT_DIR, PAGE_URL, QUIET_MS, TEST_MS, WAIT_MS, assertClean, settle } from './page_session.mjs';
 
 const run = promisify(execFile);
@@ -55,15 +55,13 @@ const catalogue = async name => {
 const EN = await catalogue('en');
 const RU = await catalogue('ru');
 
-let browser;
+const browser = chromiumForThisFile();
 let work;
-before(async () => {
+before(() => {
   mkdirSync(ARTIFACT_DIR, { recursive: true });
   work = mkdtempSync(path.join(os.tmpdir(), 'print-sheet-'));
-  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, timeout: 60000 });
 });
-after(async () => {
-  await browser?.close();
+after(() => {
   if (work) rmSync(work, { recursive: true, force: true });
 });
 
@@ -71,7 +69,7 @@ after(async () => {
 // Opens `url` with window.print() stubbed (it counts its calls: a real print dialog would block
 // the test) and records the API answers and every sign of trouble, CSP violations included.
 async function openPage(url, viewport = { width: 1280, height: 900 }) {
-  const context = await browser.newContext({ viewport });
+  const context = await browser().newContext({ viewport });
   const page = await context.newPage();
   page.setDefaultTimeout(WAIT_MS);
   const log = { answers: [], problems: [], inFlight: 0, lastActivity: Date.now() };

@@ -19,15 +19,15 @@
 //
 // Environment: CUTCALC_URL (required), E2E_PAGE_URL, E2E_ARTIFACT_DIR, CHROMIUM_PATH, as in
 // calculator.test.mjs.
-import { after, before, describe, test } from 'node:test';
+import { before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFile } from 'node:child_process';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { promisify } from 'node:util';
 
-import { CHROMIUM, CHROMIUM_ARGS, chromium, env, repo } from './browser.mjs';
-import { API, ARTIFACT_DIR, PAGE_URL, QUIET_MS, TEST_MS, WAIT_MS, assertClean, settle } from './page_session.mjs';
+import { env, chromiumForThisFile, repo } from './browser.mjs';
+import { ARTIFACT_DIR, PAGE_URL, TEST_MS, WAIT_MS, assertClean, openRecordedPage, settle } from './page_session.mjs';
 
 // The requests one calculation of each section sends (entry: one pass, the setup and its
 // program; speeds: the points, then the arc for up- and for down-milling), and an edit that makes
@@ -56,74 +56,11 @@ const SECTIONS = [
 ];
 const byId = id => SECTIONS.find(s => s.id === id);
 
-let browser;
-before(async () => {
-  mkdirSync(ARTIFACT_DIR, { recursive: true });
-  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS, timeout: 60000 });
-});
-after(async () => {
-  await browser?.close();
-});
+const browser = chromiumForThisFile();
+before(() => mkdirSync(ARTIFACT_DIR, { recursive: true }));
 
 // ------------------------------------------------------------------ a page and what happens on it
-// Opens `url` in a new context (clipboard granted) and records every API exchange (in the order
-// the requests were sent) and every sign of trouble, CSP violations included.
-async function openPage(url, viewport = { width: 1280, height: 900 }) {
-  const context = await browser.newContext({ viewport, acceptDownloads: true });
-  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(API).origin });
-  const page = await context.newPage();
-  page.setDefaultTimeout(WAIT_MS);
-  const log = { exchanges: [], problems: [], inFlight: 0, lastActivity: Date.now() };
-  await page.addInitScript(() => {
-    window.__cspViolations = [];
-    document.addEventListener('securitypolicyviolation', e =>
-      window.__cspViolations.push(`${e.violatedDirective} ${e.blockedURI}`),
-    );
-  });
-  page.on('console', msg => {
-    if (msg.type() === 'error') log.problems.push(`console error: ${msg.text()}`);
-  });
-  page.on('pageerror', error => log.problems.push(`page error: ${error.message}`));
-  const activity = () => {
-    log.lastActivity = Date.now();
-  };
-  page.on('request', request => {
-    log.inFlight += 1;
-    activity();
-    const u = new URL(request.url());
-    if (request.method() === 'POST' && u.pathname.startsWith('/v1/')) {
-      const entry = { path: u.pathname, url: request.url(), body: request.postData() ?? '', status: 0, json: null };
-      entry.done = request
-        .response()
-        .then(async response => {
-          entry.status = response?.status() ?? 0;
-          entry.text = (await response?.text()) ?? '';
-          try {
-            entry.json = JSON.parse(entry.text);
-          } catch {
-            entry.json = null;
-          }
-        })
-        .catch(() => {});
-      log.exchanges.push(entry);
-    }
-  });
-  page.on('requestfinished', () => {
-    log.inFlight -= 1;
-    activity();
-  });
-  page.on('requestfailed', request => {
-    log.inFlight -= 1;
-    activity();
-    log.problems.push(`request failed: ${request.method()} ${request.url()}: ${request.failure()?.errorText}`);
-  });
-  page.on('response', response => {
-    if (response.status() >= 400) log.problems.push(`HTTP ${response.status()} for ${response.request().method()} ${response.url()}`);
-  });
-  const response = await page.goto(url, { waitUntil: 'load' });
-  assert.equal(response?.status(), 200, `GET ${url}`);
-  return { context, page, log };
-}
+const openPage = (url, viewport) => openRecordedPage(browser(), url, { viewport, clipboard: true });
 
 
 
