@@ -1,9 +1,9 @@
 # cutcalc container: build stage compiles the release binary from Debian packages only; the
 # runtime stage holds the binary and its shared libraries and runs as a non-root user.
 FROM debian:bookworm-slim AS build
+COPY scripts/debian-packages-service.txt /tmp/
 RUN apt-get update \
- && apt-get install -y --no-install-recommends build-essential cmake ninja-build pkg-config \
-      libcpp-httplib-dev nlohmann-json3-dev libeigen3-dev libspdlog-dev \
+ && apt-get install -y --no-install-recommends $(grep -v '^\s*#' /tmp/debian-packages-service.txt) \
  && rm -rf /var/lib/apt/lists/*
 WORKDIR /src
 COPY CMakeLists.txt CMakePresets.json openapi.yaml ./

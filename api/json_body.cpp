@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "api/header_text.h"
+#include "api/json_number_overflow.h"
 
 namespace cutcalc::api {
 namespace {
@@ -144,9 +145,20 @@ class PlainDocumentBuilder {
   json* member_ = nullptr;
 };
 
+// A number beyond a double, where the strict parse stopped.
+struct Overflow {
+  std::string pointer;
+};
+
 // The strict parse: every key of every open object remembered and the position tracked, so that
 // a rejection can say which key repeated or which field overflowed.
-std::variant<nlohmann::json, Problem> parse_strictly(std::string_view body);
+std::variant<nlohmann::json, Problem, Overflow> parse_strictly(std::string_view body);
+
+// A body with numbers beyond a double: parsed with each such number as NaN, so that every field's
+// error is listed (api/json_number_overflow.h). A syntax error, a repeated key or deep nesting
+// elsewhere is still malformed JSON, reported where the original text has it.
+std::variant<nlohmann::json, Problem> parse_with_overflows(std::string_view body,
+                                                           const Overflow& first);
 
 }  // namespace
 
@@ -159,12 +171,19 @@ std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
   if (nlohmann::json::sax_parse(body.begin(), body.end(), &builder)) {
     return document;
   }
-  return parse_strictly(body);
+  auto strict = parse_strictly(body);
+  if (auto* overflow = std::get_if<Overflow>(&strict)) {
+    return parse_with_overflows(body, *overflow);
+  }
+  if (auto* problem = std::get_if<Problem>(&strict)) {
+    return std::move(*problem);
+  }
+  return std::get<nlohmann::json>(std::move(strict));
 }
 
 namespace {
 
-std::variant<nlohmann::json, Problem> parse_strictly(std::string_view body) {
+std::variant<nlohmann::json, Problem, Overflow> parse_strictly(std::string_view body) {
   // Keys seen so far in each open object, innermost last: duplicate keys are ambiguous input.
   std::vector<std::set<std::string>> open_objects;
   PositionTracker position;
@@ -210,7 +229,7 @@ std::variant<nlohmann::json, Problem> parse_strictly(std::string_view body) {
     return Problem{ProblemKind::malformed_json, rejected.why, {}};
   } catch (const nlohmann::json::out_of_range& error) {
     if (error.id == kNumberOverflowId) {
-      return invalid_input({FieldError{position.pointer(), ErrorCode::not_finite, {}}});
+      return Overflow{position.pointer()};
     }
     return Problem{ProblemKind::malformed_json,
                    Message{ErrorCode::invalid_json, {{"reason", "out of range"}}},
@@ -224,6 +243,29 @@ std::variant<nlohmann::json, Problem> parse_strictly(std::string_view body) {
     return Problem{
         ProblemKind::malformed_json, Message{ErrorCode::invalid_json, {{"reason", why}}}, {}};
   }
+}
+
+std::variant<nlohmann::json, Problem> parse_with_overflows(std::string_view body,
+                                                           const Overflow& first) {
+  // Should the rewrite miss a number the library overflows on, the first one is said alone.
+  const Problem first_alone = invalid_input({FieldError{first.pointer, ErrorCode::not_finite, {}}});
+  const OverflowRewrite rewrite = rewrite_overflowing_numbers(body);
+  if (rewrite.numbers == 0) {
+    return first_alone;
+  }
+  auto checked = parse_strictly(rewrite.padded);
+  if (auto* problem = std::get_if<Problem>(&checked)) {
+    return std::move(*problem);
+  }
+  if (std::holds_alternative<Overflow>(checked)) {
+    return first_alone;
+  }
+  auto marked = parse_strictly(rewrite.marked);
+  if (auto* document = std::get_if<nlohmann::json>(&marked)) {
+    replace_overflow_markers(*document);
+    return std::move(*document);
+  }
+  return first_alone;
 }
 
 }  // namespace

@@ -41,16 +41,20 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
   if (auto* problem = std::get_if<Problem>(&outcome)) {
     return problem_response(*problem, instance, request_id, request.language);
   }
+  // An answer with two forms is chosen by Accept: caches must keep the forms apart.
+  bool chosen_by_accept = false;
   if (auto* document = std::get_if<JsonWithText>(&outcome)) {
     if (prefers_plain_text(request.accept)) {
       return ApiResponse{
           200,
           "text/plain; charset=us-ascii",
           std::move(document->text),
-          {{"Content-Disposition", "attachment; filename=\"" + document->file_name + "\""}}};
+          {{"Content-Disposition", "attachment; filename=\"" + document->file_name + "\""},
+           {"Vary", "Accept"}}};
     }
     nlohmann::json json_form = std::move(document->json);  // moved out before the variant changes
     outcome = std::move(json_form);
+    chosen_by_accept = true;
   }
   auto* text = std::get_if<JsonText>(&outcome);
   const auto* body = std::get_if<nlohmann::json>(&outcome);
@@ -61,8 +65,10 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
         Problem{ProblemKind::internal_error, Message{ErrorCode::internal_error}, {}}, instance,
         request_id, request.language);
   }
-  return ApiResponse{
+  ApiResponse answer{
       200, "application/json", text != nullptr ? std::move(text->text) : body->dump(), {}};
+  if (chosen_by_accept) answer.headers.emplace_back("Vary", "Accept");
+  return answer;
 }
 
 }  // namespace cutcalc::api

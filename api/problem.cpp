@@ -107,11 +107,16 @@ std::string problem_json(const Problem& problem, const std::string& instance,
 }
 
 ApiResponse problem_response(const Problem& problem, const std::string& instance,
-                             const std::string& request_id, Language language) {
-  return ApiResponse{http_status(problem.kind),
-                     kProblemMediaType,
-                     problem_json(problem, instance, request_id, language),
-                     {{"Content-Language", std::string(language_tag(language))}}};
+                             const std::string& request_id, Language language,
+                             LanguageChoice choice) {
+  ApiResponse response{http_status(problem.kind),
+                       kProblemMediaType,
+                       problem_json(problem, instance, request_id, language),
+                       {{"Content-Language", std::string(language_tag(language))}}};
+  if (choice == LanguageChoice::negotiated) {
+    response.headers.emplace_back("Vary", "Accept-Language");
+  }
+  return response;
 }
 
 }  // namespace cutcalc::api

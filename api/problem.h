@@ -55,9 +55,16 @@ Problem invalid_input(std::vector<FieldError> errors);
 std::string problem_json(const Problem& problem, const std::string& instance,
                          const std::string& request_id, Language language = Language::en);
 
-// problem_json wrapped as a response with the right status, media type and Content-Language.
+// Where a problem's language came from: the request's Accept-Language, so that caches must keep
+// the answers apart by it (Vary), or fixed (a request whose head could not be read is answered in
+// English).
+enum class LanguageChoice { negotiated, fixed };
+
+// problem_json wrapped as a response with the right status, media type, Content-Language and,
+// when negotiated, Vary: Accept-Language.
 ApiResponse problem_response(const Problem& problem, const std::string& instance = {},
-                             const std::string& request_id = {}, Language language = Language::en);
+                             const std::string& request_id = {}, Language language = Language::en,
+                             LanguageChoice choice = LanguageChoice::negotiated);
 
 inline constexpr const char* kProblemMediaType = "application/problem+json";
 

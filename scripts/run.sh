@@ -3,7 +3,8 @@
 # Extra arguments go to cutcalc, e.g. scripts/run.sh --port 9000 --log-format json
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
-cmake --preset release >/dev/null
-cmake --build --preset release --target cutcalc
-exec build/release/service/cutcalc "$@"
+# Only what the service needs: no test packages, no Node.js (the tests' setup is scripts/test.sh).
+scripts/setup.sh --service
+cmake --preset service >/dev/null
+cmake --build --preset service --target cutcalc
+exec build/service/service/cutcalc "$@"

@@ -13,18 +13,33 @@ bool CorsPolicy::allows(std::string_view origin) const {
   });
 }
 
-void CorsPolicy::decorate(const httplib::Request& req, httplib::Response& res) const {
+httplib::Headers CorsPolicy::headers_for(std::string_view origin, bool origin_unread) const {
+  httplib::Headers headers;
   if (origins_.empty()) {
-    return;
+    return headers;
   }
   // Caches must keep answers for different origins apart.
-  res.set_header("Vary", "Origin");
-  const std::string origin = req.get_header_value("Origin");
-  if (!allows(origin)) {
-    return;
+  headers.emplace("Vary", "Origin");
+  const bool any = std::find(origins_.begin(), origins_.end(), "*") != origins_.end();
+  if (origin.empty() && origin_unread && any) {
+    headers.emplace("Access-Control-Allow-Origin", "*");
+  } else if (allows(origin)) {
+    headers.emplace("Access-Control-Allow-Origin", std::string(origin));
+  } else {
+    return headers;
   }
-  res.set_header("Access-Control-Allow-Origin", origin);
-  res.set_header("Access-Control-Expose-Headers", "X-Request-Id, Content-Disposition");
+  headers.emplace("Access-Control-Expose-Headers", "X-Request-Id, Content-Disposition");
+  return headers;
+}
+
+void CorsPolicy::decorate(const httplib::Request& req, httplib::Response& res) const {
+  for (const auto& [name, value] : headers_for(req.get_header_value("Origin"), false)) {
+    res.set_header(name, value);
+  }
+}
+
+httplib::Headers CorsPolicy::rejection_headers(std::string_view origin) const {
+  return headers_for(origin, origin.empty());
 }
 
 void CorsPolicy::answer_options(httplib::Response& res, const std::string& allow) {

@@ -42,6 +42,13 @@ constexpr const char* kNoSniffHeader = "X-Content-Type-Options";
 void write(httplib::Response& res, api::ApiResponse&& response) {
   res.status = response.status;
   for (const auto& [name, value] : response.headers) {
+    // One Vary field: the CORS policy may have set one already (Origin).
+    if (name == "Vary") {
+      if (const auto said = res.headers.find("Vary"); said != res.headers.end()) {
+        said->second += ", " + value;
+        continue;
+      }
+    }
     res.set_header(name, value);
   }
   // As set_content() does (the library has no overload that takes the body by move).
@@ -186,13 +193,15 @@ std::string HttpApp::engine_error_response(const EngineError& error) {
                     {{"reason", std::string(error.detail)}});
   const std::string request_id = generate_request_id();
   const std::string instance = problem_instance(error.target);
-  const api::ApiResponse problem = api::problem_response(said, instance, request_id);
+  const api::ApiResponse problem = api::problem_response(
+      said, instance, request_id, api::Language::en, api::LanguageChoice::fixed);
   metrics_.observe("unmatched", error.method, problem.status, 0.0);
   if (access_log_enabled()) {
     log_access(
         {error.method.empty() ? "-" : error.method, instance, problem.status, 0.0, request_id, {}});
   }
-  httplib::Headers headers(problem.headers.begin(), problem.headers.end());
+  httplib::Headers headers = cors_.rejection_headers(error.origin);
+  headers.insert(problem.headers.begin(), problem.headers.end());
   headers.emplace(kRequestIdHeader, request_id);
   headers.emplace(kNoSniffHeader, "nosniff");
   return closing_response(problem.status, problem.content_type, problem.body, headers);

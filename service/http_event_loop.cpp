@@ -317,7 +317,7 @@ class EventLoopEngine::Loop {
       const RequestFrame frame = classify_request(unread, settings.framing);
       if (frame.verdict == RequestFrame::Verdict::incomplete) {
         if (unread.size() >= settings.framing.max_buffered_bytes()) {  // cannot happen: framing
-          reject(connection, {400, "the request is over the size limit", {}, {}});
+          reject(connection, {400, "the request is over the size limit", {}, {}, {}});
           return false;
         }
         start_request(connection);
@@ -328,7 +328,7 @@ class EventLoopEngine::Loop {
         return false;
       }
       if (frame.verdict == RequestFrame::Verdict::reject) {
-        reject(connection, {frame.status, frame.reason, frame.method, frame.target});
+        reject(connection, {frame.status, frame.reason, frame.method, frame.target, frame.origin});
         return false;
       }
       const bool close_connection = connection.requests_left <= 1 || engine_.stopping_();
@@ -488,7 +488,7 @@ void EventLoopEngine::adopt(int sock) {
     while (::recv(fd.get(), sink.data(), sink.size(), MSG_DONTWAIT) > 0) {
     }
     const std::string response =
-        render_error_({503, "the server is at its connection limit; retry later", {}, {}});
+        render_error_({503, "the server is at its connection limit; retry later", {}, {}, {}});
     [[maybe_unused]] const auto n =
         ::send(fd.get(), response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
     ::shutdown(fd.get(), SHUT_WR);

@@ -56,6 +56,7 @@ struct EngineError {
   std::string_view detail;
   std::string_view method;  // empty when the request line was not read
   std::string_view target;
+  std::string_view origin;  // the request's Origin field; empty when it was not read
 };
 
 class EventLoopEngine {

@@ -287,6 +287,8 @@ RequestFrame classify_request(std::string_view input, const FramingLimits& limit
       } while (!rest.empty());
     } else if (api::iequals_ascii(name, "host")) {
       ++hosts;
+    } else if (api::iequals_ascii(name, "origin")) {
+      frame.origin = value;
     } else if (api::iequals_ascii(name, "expect")) {
       frame.expects_continue =
           frame.expects_continue || (http11 && api::iequals_ascii(value, "100-continue"));

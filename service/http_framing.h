@@ -51,6 +51,7 @@ struct RequestFrame {
   bool expects_continue = false;  // Expect: 100-continue (HTTP/1.1)
   std::string_view method;        // from the request line, once it is complete and valid
   std::string_view target;
+  std::string_view origin;  // the Origin field, once read (CORS headers on a rejection too)
 
   // reject:
   int status = 0;           // 400 or 413

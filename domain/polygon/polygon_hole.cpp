@@ -169,6 +169,10 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
         "SWITCH THE SPINDLE TO ITS C AXIS POSITION MODE BEFORE THIS PROGRAM AND BACK AFTER IT: "
         "A MACHINE-SPECIFIC COMMAND, NOT WRITTEN HERE");
   }
+  if (options.units == program::Units::inch) {
+    // The comment numbers stay in mm (4 decimals of an inch would print the tolerance as 0).
+    comments.push_back("NUMBERS IN THESE COMMENTS IN MM, PROGRAM UNITS INCH");
+  }
   result.program = detail::write_dialect_program(layout, loop, comments, options);
   result.file_name = program::file_name(options);
   return result;

@@ -105,6 +105,17 @@ TEST(BadInput, NumberTooLargeForADoubleNamesItsField) {
   EXPECT_TRUE(problem_names_pointer(reply.json, "/cutter_diameter_mm")) << reply.body;
 }
 
+TEST(BadInput, NumberTooLargeForADoubleHidesNoOtherFieldError) {
+  const JsonReply reply = post("/v1/roughness/bore-milling",
+                               R"({"bore_radius_mm": 1e400, "cutter_radius_mm": 32.4, "teeth": 1001,
+                                   "feed_per_rev_mm": -1e999, "milling": "up", "zz": 1})");
+  expect_problem(reply, 422);
+  for (const char* pointer : {"/bore_radius_mm", "/teeth", "/feed_per_rev_mm", "/zz"}) {
+    EXPECT_TRUE(problem_names_pointer(reply.json, pointer)) << pointer << ": " << reply.body;
+  }
+  EXPECT_EQ(reply.json["errors"].size(), 4U) << reply.body;
+}
+
 TEST(BadInput, HugeFiniteSizesAreRejectedNotOverflowed) {
   const JsonReply reply =
       post(kEntry,

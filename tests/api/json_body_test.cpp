@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <variant>
 
@@ -69,12 +70,32 @@ TEST(JsonBody, NestingUpToTheLimitParsesAndBeyondIsRefused) {
   EXPECT_EQ(problem.detail->code, ErrorCode::too_deeply_nested);
 }
 
-TEST(JsonBody, NumberBeyondADoubleNamesItsField) {
-  const Problem problem = refused(R"({"entry": {"width_mm": [1, 1e400]}})");
-  EXPECT_EQ(problem.kind, ProblemKind::invalid_input);
-  ASSERT_EQ(problem.errors.size(), 1U);
-  EXPECT_EQ(problem.errors[0].pointer, "/entry/width_mm/1");
-  EXPECT_EQ(problem.errors[0].code, ErrorCode::not_finite);
+TEST(JsonBody, NumbersBeyondADoubleReadAsNaNAndTheRestAsSent) {
+  // NaN is what the field reader reports as not_finite at the field's own pointer, beside the
+  // errors of every other field (a body stopped at its first overflow hid them).
+  const nlohmann::json document =
+      parsed(R"({"entry": {"width_mm": [1, 1e400]}, "b": -1E+999, "s": "1e400", "n": 2})");
+  EXPECT_TRUE(std::isnan(document["entry"]["width_mm"][1].get<double>()));
+  EXPECT_EQ(document["entry"]["width_mm"][0], 1);
+  EXPECT_TRUE(std::isnan(document["b"].get<double>()));
+  EXPECT_EQ(document["s"], "1e400");  // inside a string: text, not a number
+  EXPECT_EQ(document["n"], 2);
+}
+
+TEST(JsonBody, MalformedTextAfterAnOverflowIsMalformedWhereItStands) {
+  const Problem problem = refused(R"({"a": 1e400, "b": 1,})");
+  EXPECT_EQ(problem.kind, ProblemKind::malformed_json);
+  ASSERT_TRUE(problem.detail.has_value());
+  EXPECT_EQ(problem.detail->code, ErrorCode::invalid_json);
+  const Problem same_place = refused(R"({"a": 0    , "b": 1,})");
+  ASSERT_TRUE(same_place.detail.has_value());
+  EXPECT_EQ(problem.detail->params, same_place.detail->params);
+}
+
+TEST(JsonBody, RepeatedKeyAfterAnOverflowIsStillNamed) {
+  const Problem problem = refused(R"({"a": 1e400, "a": 2})");
+  ASSERT_TRUE(problem.detail.has_value());
+  EXPECT_EQ(problem.detail->code, ErrorCode::duplicate_key);
 }
 
 TEST(JsonBody, TrailingGarbageAndBadUtf8AreMalformed) {

@@ -30,6 +30,7 @@ bool has_cyrillic(const std::string& text) {
 struct Answer {
   int status = 0;
   std::string content_language;
+  std::vector<std::string> vary;
   json body;
 };
 
@@ -45,6 +46,9 @@ Answer send(const std::string& method, const std::string& path, const std::strin
   if (!result) return answer;
   answer.status = result->status;
   answer.content_language = result->get_header_value("Content-Language");
+  for (std::size_t i = 0; i < result->get_header_value_count("Vary"); ++i) {
+    answer.vary.push_back(result->get_header_value("Vary", i));
+  }
   answer.body = json::parse(result->body, nullptr, false);
   return answer;
 }
@@ -112,6 +116,35 @@ TEST(ProblemLanguage, ProblemsOutsideTheCalculationsFollowTheLanguageToo) {
   expect_russian(send("POST", "/v1/entry-length", "{}", "ru", "text/plain"), "415");
   expect_russian(send("POST", "/v1/entry-length", R"({"a":1,"a":2})", "ru"), "400");
   expect_english(send("GET", "/no/such/route", "", "de, fr;q=0.5"), "404 in an unknown language");
+}
+
+bool varies_by_language(const Answer& answer) {
+  for (const std::string& vary : answer.vary) {
+    if (vary.find("Accept-Language") != std::string::npos) return true;
+  }
+  return false;
+}
+
+// A cache between client and service must not hand a Russian problem to an English client.
+TEST(ProblemLanguage, NegotiatedProblemsVaryByAcceptLanguage) {
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"POST /v1/roughness/groove-wall", R"({"feed_mm": -1})"},
+      {"POST /v1/roughness/groove-wall", "{"},
+      {"GET /v1/nope", ""},
+      {"GET /v1/roughness/groove-wall", ""},
+  };
+  for (const auto& [what, body] : refused) {
+    const std::string method = what.substr(0, what.find(' '));
+    const std::string path = what.substr(what.find(' ') + 1);
+    for (const char* language : {"ru", "en", ""}) {
+      const Answer answer = send(method, path, body, language);
+      EXPECT_GE(answer.status, 400) << what;
+      EXPECT_TRUE(varies_by_language(answer)) << what << " (" << language << ")";
+    }
+  }
+  const Answer plain = send("GET", "/healthz", "", "ru");
+  EXPECT_EQ(plain.status, 200);
+  EXPECT_FALSE(varies_by_language(plain)) << "an answer in no language";
 }
 
 TEST(ProblemLanguage, ErrorsCarryTheirCodeAndParameters) {

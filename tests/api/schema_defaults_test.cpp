@@ -205,5 +205,41 @@ TEST(SchemaDefaults, EveryDefaultSentExplicitlyGivesTheAnswerOfOmittingIt) {
   }
 }
 
+// A client (or a validator with useDefaults) fills in every default at once, not one at a time:
+// declared defaults must be sendable together (two exclusive fields that both declared a default
+// made every such request a 422).
+TEST(SchemaDefaults, AllDefaultsSentTogetherGiveTheAnswerOfOmittingThem) {
+  int comparisons = 0;
+  for (const auto& file : std::filesystem::directory_iterator(CUTCALC_REFERENCE_DIR)) {
+    if (file.path().extension() != ".json") continue;
+    const json reference = load_reference(file.path().filename().string());
+    const std::string path = reference.at("endpoint").get<std::string>();
+    const json& body = document()
+                           .at("paths")
+                           .at(path)
+                           .at("post")
+                           .at("requestBody")
+                           .at("content")
+                           .at("application/json");
+    for (const auto& [name, request] : base_requests(reference, body)) {
+      std::vector<Insertion> insertions;
+      collect(body.at("schema"), request, "", "", insertions);
+      json filled = request;
+      for (const Insertion& insertion : insertions) {
+        if (!insertion.present) filled[json::json_pointer(insertion.pointer)] = insertion.value;
+      }
+      if (filled == request) continue;
+      const JsonReply omitted = post(path, request.dump());
+      const JsonReply sent = post(path, filled.dump());
+      ASSERT_EQ(omitted.status, 200) << path << " " << name << ": " << omitted.body.substr(0, 300);
+      EXPECT_EQ(sent.status, 200) << "every default sent in " << name << " (" << filled.dump()
+                                  << "): " << sent.body.substr(0, 300);
+      EXPECT_EQ(sent.body, omitted.body) << "every default sent changes the answer of " << name;
+      ++comparisons;
+    }
+  }
+  EXPECT_GT(comparisons, 20);
+}
+
 }  // namespace
 }  // namespace cutcalc::testing

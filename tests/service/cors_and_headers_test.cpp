@@ -59,6 +59,39 @@ TEST(Cors, OtherOriginsAndTheDefaultGetNoAllowOrigin) {
   EXPECT_EQ(answer.find("Access-Control-Allow-Origin"), std::string::npos) << answer;
 }
 
+// A browser sees an engine's rejection (a body over the limit, malformed framing) as the problem
+// it is, not as a network error: the rejection carries the CORS headers too.
+TEST(Cors, EngineRejectionsCarryAllowOriginForAnAllowedOrigin) {
+  ServiceProcess service(CUTCALC_BINARY, {"--cors-origin", "https://mes.example"});
+  const std::string too_large =
+      exchange(service.port(),
+               "POST /v1/entry-length HTTP/1.1\r\nHost: x\r\nOrigin: https://mes.example\r\n"
+               "Content-Type: application/json\r\nContent-Length: 10000000\r\n\r\n");
+  EXPECT_NE(too_large.find("HTTP/1.1 413"), std::string::npos) << too_large;
+  EXPECT_NE(too_large.find("Access-Control-Allow-Origin: https://mes.example\r\n"),
+            std::string::npos)
+      << too_large;
+  const std::string malformed =
+      exchange(service.port(),
+               "POST /v1/entry-length HTTP/1.1\r\nHost: x\r\nOrigin: https://mes.example\r\n"
+               "Content-Length: 1\r\nContent-Length: 2\r\n\r\nab");
+  EXPECT_NE(malformed.find("HTTP/1.1 400"), std::string::npos) << malformed;
+  EXPECT_NE(malformed.find("Access-Control-Allow-Origin: https://mes.example\r\n"),
+            std::string::npos)
+      << malformed;
+  const std::string other =
+      exchange(service.port(),
+               "POST /v1/entry-length HTTP/1.1\r\nHost: x\r\nOrigin: https://evil.example\r\n"
+               "Content-Length: 10000000\r\n\r\n");
+  EXPECT_NE(other.find("HTTP/1.1 413"), std::string::npos) << other;
+  EXPECT_EQ(other.find("Access-Control-Allow-Origin"), std::string::npos) << other;
+
+  ServiceProcess any(CUTCALC_BINARY, {"--cors-origin", "*"});
+  const std::string unread = exchange(any.port(), "BAD\r\n\r\n");  // no head to read Origin from
+  EXPECT_NE(unread.find("HTTP/1.1 400"), std::string::npos) << unread;
+  EXPECT_NE(unread.find("Access-Control-Allow-Origin: *\r\n"), std::string::npos) << unread;
+}
+
 TEST(ResponseHeaders, EveryResponseSaysNosniffAndNamesNoLibrary) {
   ServiceProcess service(CUTCALC_BINARY);
   for (const std::string& request :

@@ -96,6 +96,24 @@ TEST(PolygonProgram, PrintedDeviationAtFourDecimalsInMmIsTheFittedOneWithinRound
   }
 }
 
+TEST(PolygonProgram, InchProgramSaysItsCommentNumbersAreInMm) {
+  for (const char* dialect : {"linuxcnc", "fanuc", "sinumerik"}) {
+    json request = ok_requests().front();
+    request["program"] = {{"dialect", dialect}, {"units", "inch"}};
+    const JsonReply reply = post_checked(request);
+    ASSERT_EQ(reply.status, 200) << reply.body;
+    const std::string program = reply.json.at("program").get<std::string>();
+    const std::size_t said = program.find("NUMBERS IN THESE COMMENTS IN MM, PROGRAM UNITS INCH");
+    ASSERT_NE(said, std::string::npos) << dialect << "\n" << program.substr(0, 600);
+    EXPECT_LT(said, program.find("G20")) << dialect << ": said before the unit is set";
+    request["program"]["units"] = "mm";
+    const JsonReply mm = post_checked(request);
+    EXPECT_EQ(mm.json.at("program").get<std::string>().find("NUMBERS IN THESE COMMENTS"),
+              std::string::npos)
+        << dialect;
+  }
+}
+
 TEST(PolygonProgram, RoundingBeyondTheToleranceWarnsInTheSpecsOrderAndAsCommentLines) {
   json request = ok_requests().front();
   request["spindle_speed_rpm"] = 30.5;
