@@ -11,6 +11,7 @@
 //             integer, missing required, unknown key, bad enum/const, pattern, list length; or one
 //             rule between members broken (oneOf alternatives, not, dependentRequired)
 //   fault2    two members broken at once
+//   faultN    three to six members broken at once (a number too large for a double aside)
 //   boundary  every numeric bound of every member and the exact next double past it (the bound
 //             of an integer member also +-1)
 //   defaults  every schema default sent explicitly, beside the same body without them
@@ -26,6 +27,7 @@
 //   fault1, boundary past a bound: 422 `invalid-input` (400 allowed) whose errors[] names the
 //             broken member (a broken rule between members: "" or one of its members);
 //   fault2:   both broken members named when both faults are field-level (else at least one);
+//   faultN:   every broken member named; an emptied object: every required member of it named;
 //   defaults: the same answer as the body without the defaults (200: the same JSON; a problem:
 //             the same type and the same errors' (pointer, code)).
 // Every finding is deduplicated (operation, rule, fault kinds at their schema locations, status,
@@ -448,6 +450,14 @@ function faultsOf(schema, body, rng) {
     }
     if (t === 'object' && isObject(value)) {
       if (f.closed) out.push(fieldFault('unknown_key', join(p, 'zz_unknown_member'), () => 1, { add: true }));
+      // every required member missing at once: each one listed
+      const requiredHere = [...f.required].filter(k => f.props[k] && !f.choices.some(c => c.alts.some(a => a.includes(k))));
+      if (!isRoot && requiredHere.length > 1) {
+        // without its discriminator the object has no branch: only the discriminator can be named
+        const discriminators = requiredHere.filter(k => flat(f.props[k]).const !== undefined);
+        out.push({ kind: 'emptied_object', pointer: p, fieldLevel: true, all: true, expect: (discriminators.length ? discriminators : requiredHere).map(k => join(p, k)),
+          discriminator: discriminators.length > 0, apply: b => setAt(b, p, {}) });
+      }
       const choiceMembers = new Set(f.choices.flatMap(c => c.alts.flat()));
       for (const k of Object.keys(value)) {
         const kp = join(p, k);
@@ -637,7 +647,7 @@ function buildCases(ops) {
     const bases = [...refs.map(r => r.body)];
     const base = () => (refs.length && rng.chance(0.4) ? clone(rng.pick(refs).body) : randomValid(op, rng));
     const mine = [];
-    const budget = { valid: Math.round(perOp * 0.22), fault1: Math.round(perOp * 0.24), fault2: Math.round(perOp * 0.16),
+    const budget = { valid: Math.round(perOp * 0.2), fault1: Math.round(perOp * 0.22), fault2: Math.round(perOp * 0.14), faultN: Math.round(perOp * 0.06),
       boundary: Math.round(perOp * 0.28), defaults: Math.round(perOp * 0.1) };
     // valid: the reference requests, then random ones
     for (const r of refs) if (mine.filter(c => c.category === 'valid').length < budget.valid / 3) mine.push({ op, category: 'valid', body: r.body, note: r.from });
@@ -670,6 +680,19 @@ function buildCases(ops) {
       const second = rng.pick(faults.filter(apart));
       if (!second) continue;
       const c = faultCase(op, b, [first, second], 'fault2');
+      if (c) { mine.push(c); n++; }
+    }
+    // three to six members broken at once (1e400 aside: it hides the others, see fault2): each one named
+    for (let n = 0, tries = 0; n < budget.faultN && tries < budget.faultN * 5; tries++) {
+      const b = base();
+      const faults = faultsOf(op.schema, b, rng).filter(x => x.fieldLevel && x.kind !== 'too_large_for_double');
+      const chosen = [];
+      for (const x of sample(faults, faults.length, rng)) {
+        if (chosen.length >= rng.int(3, 6)) break;
+        if (chosen.every(y => !related(x.pointer, y.pointer) && !((x.discriminator || y.discriminator) && parentOf(x.pointer).parent === parentOf(y.pointer).parent))) chosen.push(x);
+      }
+      if (chosen.length < 3) continue;
+      const c = faultCase(op, b, chosen, 'faultN');
       if (c) { mine.push(c); n++; }
     }
     // boundaries: every bound of every numeric member, on the reference bases first, then random ones
@@ -766,7 +789,7 @@ function faultCase(op, base, faults, category) {
     }
   }
   if (schemaValid(op, b)) return undefined; // not a fault after all (e.g. a default-like value)
-  return { op, category, body: b, base, faults: faults.map(({ kind, pointer, fieldLevel, expect, discriminator }) => ({ kind, pointer, fieldLevel, expect, discriminator })) };
+  return { op, category, body: b, base, faults: faults.map(({ kind, pointer, fieldLevel, expect, discriminator, all }) => ({ kind, pointer, fieldLevel, expect, discriminator, all })) };
 }
 
 // ------------------------------------------------------------------ HTTP
@@ -868,7 +891,7 @@ function check(c, r, pairAnswer) {
           (f.discriminator && parentOf(e.pointer).parent === parentOf(f.pointer).parent));
         if (!explained) add('spurious_field_error', `errors[] has ${e.pointer} ${e.code}, which is not broken (broken: ${faultText(c.faults)})`, { at: `${generic(e.pointer)} ${e.code}` });
       }
-      const missing = c.faults.filter(f => !f.expect.some(p => named.has(p)));
+      const missing = c.faults.filter(f => (f.all ? !f.expect.every(p => named.has(p)) : !f.expect.some(p => named.has(p))));
       const allField = c.faults.every(f => f.fieldLevel);
       const unnamed = allField || c.faults.length === 1 ? missing : missing.length === c.faults.length ? missing : [];
       if (unnamed.length) {
@@ -956,6 +979,18 @@ async function minimise(fd, deadline) {
   return spent;
 }
 
+// Pointers of the members `after` has and `before` has not.
+function addedMembers(before, after, p = '') {
+  const out = [];
+  if (isObject(after)) {
+    for (const [k, v] of Object.entries(after)) {
+      if (!isObject(before) || !(k in before)) out.push(join(p, k));
+      else out.push(...addedMembers(before[k], v, join(p, k)));
+    }
+  }
+  return out;
+}
+
 // ------------------------------------------------------------------ run
 async function main() {
   const started = Date.now();
@@ -1026,9 +1061,9 @@ async function main() {
     (skipped ? ` (${skipped} cases not run: the ${SECONDS} s budget ran out)` : '') +
     `, ${minimiseRequests} more to minimise; ${((tested - started) / 1000).toFixed(1)} s testing, ${((Date.now() - started) / 1000).toFixed(1)} s in all`);
   line('');
-  line('operation                   category   sent    200  422-imp  422-inv   400  other  findings  notes');
+  line('operation                   category   sent    200  422-imp  422-inv   400  other  findings  notes   (findings: answers with one, known ones included)');
   for (const [p, o] of stats) {
-    for (const cat of ['valid', 'fault1', 'fault2', 'boundary', 'defaults']) {
+    for (const cat of ['valid', 'fault1', 'fault2', 'faultN', 'boundary', 'defaults']) {
       const s = o.get(cat);
       if (!s) continue;
       line(`${p.padEnd(27)} ${cat.padEnd(9)} ${[s.sent, s.s200, s.impossible, s.invalid, s.s400, s.other, s.findings, s.notes]
@@ -1040,7 +1075,8 @@ async function main() {
     const r = fd.answer;
     line(`${label} ${fd.signature}  (${fd.count}x)`);
     line(`    ${fd.rule}: ${fd.detail}`);
-    if (c.note) line(`    case: ${c.note}`);
+    if (c.pair) line(`    case: defaults sent: ${addedMembers(c.pair, c.body).join(', ')}`);
+    else if (c.note) line(`    case: ${c.note}`);
     if (c.faults) line(`    broken: ${faultText(c.faults)}`);
     line(`    request: ${c.op.method} ${c.op.path}  ${toJson(c.body)}`);
     line(`    answer: ${r.error ?? `${r.status} ${r.contentType} ${r.raw.length > 1200 ? r.raw.slice(0, 1200) + '...' : r.raw}`}`);
