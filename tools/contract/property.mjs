@@ -71,7 +71,7 @@ const OPENAPI_FILE = path.resolve(opt.openapi ?? env('OPENAPI_FILE') ?? path.joi
 const REFERENCE_DIR = path.resolve(repo, opt['reference-dir'] ?? env('CUTCALC_REFERENCE_DIR') ?? path.join('..', 'shared', 'reference'));
 const VERBOSE = opt.verbose || env('PROPERTY_VERBOSE') === '1';
 const TIMEOUT_MS = 30000;
-const MINIMISE_REQUESTS_PER_FINDING = 40;
+const MINIMISE_REQUESTS_PER_FINDING = 60;
 
 let contract;
 try {
@@ -971,6 +971,42 @@ async function minimise(fd, deadline) {
         progress = true;
         break;
       }
+    }
+  }
+  // then rounder numbers (two significant digits) where the finding stays
+  const leaves = [];
+  const walkNumbers = (v, p) => {
+    if (isObject(v) || Array.isArray(v)) for (const [k, x] of Object.entries(v)) walkNumbers(x, join(p, k));
+    else if (typeof v === 'number' && Number.isFinite(v) && !protectedPointers.some(q => related(p, q))) leaves.push(p);
+  };
+  walkNumbers(c.body, '');
+  for (const p of leaves) {
+    if (spent >= MINIMISE_REQUESTS_PER_FINDING || Date.now() >= deadline) break;
+    const x = resolvePointer(c.body, p).value;
+    const rounder = Number(x.toPrecision(2));
+    if (rounder === x) continue;
+    const body = clone(c.body);
+    setAt(body, p, rounder);
+    if (c.faults && schemaValid(c.op, body)) continue;
+    let base;
+    if (c.base) {
+      base = clone(c.base);
+      if (resolvePointer(base, p).found) setAt(base, p, rounder);
+      if (!schemaValid(c.op, base)) continue;
+    } else if (!c.faults && !schemaValid(c.op, body)) continue;
+    let pair;
+    if (c.pair) {
+      pair = clone(c.pair);
+      if (resolvePointer(pair, p).found) setAt(pair, p, rounder);
+      if (!schemaValid(c.op, pair)) continue;
+    }
+    const trial = { ...c, body, base, pair };
+    spent++;
+    const tr = await send(c.op, body, c.headers);
+    const pr = pair ? (spent++, await send(c.op, pair)) : undefined;
+    if (check(trial, tr, pr).some(x2 => signature(trial, tr, x2) === fd.signature)) {
+      c = trial;
+      r = tr;
     }
   }
   fd.case = c;
