@@ -2,13 +2,22 @@
 # Contract step: lints openapi.yaml with Redocly CLI and Spectral, then replays every reference
 # case (../shared/reference/*.json), the operations endpoints and a list of bad-input requests
 # through Prism's validating proxy in front of a release cutcalc (tools/contract/replay.mjs).
-# Fails on any lint error and on any response, success or problem, that does not match its schema.
+# Then the property step against the same cutcalc, without Prism (tools/contract/property.mjs):
+# a few thousand bodies generated from the request schemas (schema-valid, one and two members
+# broken, every numeric bound and the next double past it, every default sent explicitly), each
+# answer checked against openapi.yaml and the rules of errors[]; its report (every finding with a
+# reproducer) is also written to build/contract/property-report.json.
+# Fails on any lint error, on any response, success or problem, that does not match its schema,
+# and on any property finding not listed in tools/contract/property-known.mjs.
 #
 # Environment (all optional):
 #   CUTCALC_BIN             cutcalc binary (default build/release/service/cutcalc, built if missing)
 #   CONTRACT_OPENAPI        the document to check and to serve through Prism (default openapi.yaml)
 #   CUTCALC_REFERENCE_DIR   reference cases (default ../shared/reference, relative to the repo)
 #   REPLAY_VERBOSE=1        print every exchange
+#   PROPERTY_SEED           the property step's seed (default fixed: the same bodies every run)
+#   PROPERTY_REQUESTS       about how many requests it sends (default 5000)
+#   PROPERTY_SECONDS        its time budget for new cases (default 150)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
@@ -107,9 +116,24 @@ for name in strict relaxed; do
   fi
 done
 kill -0 "$CUTCALC_PID" 2>/dev/null || { tail -n 30 "$WORK/cutcalc.log" >&2; echo "ci-contract: cutcalc died during the replay" >&2; status=1; }
+
+# ---------------------------------------------------------------- property-based requests
+# Directly to cutcalc: Prism re-serialises bodies (1e400 becomes null) and would answer the broken
+# ones itself.
+for name in strict relaxed; do
+  pid_var="PRISM_${name^^}_PID"
+  kill "${!pid_var}" 2>/dev/null || true
+done
+if kill -0 "$CUTCALC_PID" 2>/dev/null; then
+  echo "=== contract: property-based requests from the request schemas (cutcalc :$CUTCALC_PORT)"
+  mkdir -p "$ROOT/build/contract"
+  CUTCALC_URL="http://127.0.0.1:$CUTCALC_PORT" OPENAPI_FILE="$OPENAPI" \
+    node "$TOOLS/property.mjs" --report-json "$ROOT/build/contract/property-report.json" || status=1
+  kill -0 "$CUTCALC_PID" 2>/dev/null || { tail -n 30 "$WORK/cutcalc.log" >&2; echo "ci-contract: cutcalc died during the property step" >&2; status=1; }
+fi
 ENDED=$(date +%s)
 if [[ $status -ne 0 ]]; then
   echo "=== contract: FAILED ($((ENDED - STARTED)) s)" >&2
   exit 1
 fi
-echo "=== contract: passed: Redocly and Spectral clean, replay clean ($((ENDED - INSTALLED)) s after npm ci, $((ENDED - STARTED)) s in all)"
+echo "=== contract: passed: Redocly and Spectral clean, replay clean, property step clean ($((ENDED - INSTALLED)) s after npm ci, $((ENDED - STARTED)) s in all)"

@@ -17,7 +17,7 @@ for preset in release dev tsan; do
 done
 echo "=== fuzz: every libFuzzer harness (ASan + UBSan) for a bounded time, seeded from the reference cases"
 scripts/ci-fuzz.sh
-echo "=== contract: lint openapi.yaml, replay every reference and bad-input case through Prism"
+echo "=== contract: lint openapi.yaml, replay every reference and bad-input case through Prism, then property-based requests from the request schemas"
 scripts/ci-contract.sh
 echo "=== codegen: openapi-typescript + openapi-fetch and @hey-api/openapi-ts clients, tsc --strict, every reference case against cutcalc"
 scripts/ci-codegen.sh
