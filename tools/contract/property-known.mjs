@@ -5,16 +5,10 @@
 // `rule` (a regular expression for the whole rule name) and `match` (a regular expression on the
 // whole signature). An entry that no finding matches any more is printed as STALE: remove it.
 export const KNOWN_FINDINGS = [
-  // (1) A number too large for a double (1e400) is the only error listed: every other field error
-  // of the body is hidden.
-  { about: '1e400 hides every other field error', path: '*', rule: 'fault_not_named', match: 'any fault hidden by too_large_for_double' },
   // (2) /v1/main-time/program `extra_path_mm` (schema maximum 0) > 0 is answered as
   // impossible-input (program_needs_straight_path) after the other checks, not as a field error.
   { about: 'main-time/program extra_path_mm > 0 is impossible-input, not a field error', path: '/v1/main-time/program',
     rule: 'fault_answered_impossible|fault_not_named', match: '(above_maximum|past_bound)@/extra_path_mm' },
-  // (3) polygon-hole: top-level `safe_z_mm` and `program.safe_z_mm` both declare default 5; sending
-  // both defaults is a 422 exclusive_fields.
-  { about: 'polygon-hole safe_z_mm defaults exclusive', path: '/v1/polygon-hole/gcode', rule: 'defaults_change_answer', match: 'adds /program/safe_z_mm exclusive_fields' },
   // (4) errors[] pointers naming members the request does not have (exit_width_mismatch at
   // /exit/width_mm for an exit arc without width_mm; not_above at /program/clearance_mm when only
   // safe_z_mm was given).

@@ -486,11 +486,21 @@ function faultsOf(schema, body, rng) {
         const req = n.required ?? [];
         if (!req.length || !req.every(k => f.props[k])) continue;
         const consts = Object.entries(n.properties ?? {}).filter(([, x]) => x !== true && deref(x).const !== undefined);
-        out.push({ kind: 'forbidden_combination', pointer: join(p, req[req.length - 1]), fieldLevel: false, expect: ['', ...req.map(k => join(p, k))],
+        // members the combination needs inside a member (`not: {required: [a, b], properties: {b:
+        // {required: [c]}}}`): b/c is part of it, and may be the member named
+        const nested = Object.entries(n.properties ?? {}).flatMap(([k, x]) =>
+          x !== true && Array.isArray(deref(x).required) ? deref(x).required.map(c => [k, c]) : []);
+        out.push({ kind: 'forbidden_combination', pointer: join(p, req[req.length - 1]), fieldLevel: false,
+          expect: ['', ...req.map(k => join(p, k)), ...nested.map(([k, c]) => join(join(p, k), c))],
           apply: b => {
             const obj = resolvePointer(b, p).value;
             for (const k of req) if (!(k in obj)) obj[k] = genValue(f.props[k], rng);
             for (const [k, x] of consts) obj[k] = deref(x).const;
+            for (const [k, c] of nested) {
+              const inner = obj[k];
+              const schema = deref(f.props[k] ?? {});
+              if (inner && typeof inner === 'object' && !(c in inner)) inner[c] = genValue(deref(schema.properties?.[c] ?? {}), rng);
+            }
           } });
       }
       for (const [k, deps] of Object.entries(f.dependentRequired)) {
