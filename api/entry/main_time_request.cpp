@@ -90,7 +90,8 @@ std::variant<MainTimeRequest, Problem> read_main_time_request(const nlohmann::js
   }
   request.limits = program::read_machine_limits(in);
   in.reject_unknown_fields();
-  if (errors.empty()) errors = alternative_errors(in);
+  // Listed beside the fields' own errors: errors[] lists every field error.
+  for (FieldError& error : alternative_errors(in)) errors.push_back(std::move(error));
   if (!errors.empty()) return invalid_input(std::move(errors));
   return request;
 }

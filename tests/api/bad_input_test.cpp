@@ -198,6 +198,26 @@ TEST(BadInput, MainTimeNeedsExactlyOneSpeed) {
   EXPECT_EQ(one.status, 200) << one.body;
 }
 
+// The choice between alternatives is listed beside every other field error, the program
+// options' own rules included (it was said only when nothing else was wrong).
+TEST(BadInput, MissingSpeedIsListedBesideOtherFieldErrors) {
+  const std::string base = R"({"cutter_diameter_mm": -20, "teeth": 4, "feed_per_tooth_mm": 0.05,
+      "length_mm": 100, "entry": {"contour": "straight", "width_mm": 60},
+      "exit": {"contour": "straight", "width_mm": 60},
+      "allowance": {"width_mm": 20, "width_of_cut_mm": 20, "depth_mm": 2, "depth_of_cut_mm": 2})";
+  const JsonReply plain = post(kMainTime, base + "}");
+  EXPECT_TRUE(problem_names_pointer(plain.json, "/cutter_diameter_mm")) << plain.body;
+  EXPECT_TRUE(problem_names_pointer(plain.json, "")) << plain.body;
+  const JsonReply program =
+      post("/v1/main-time/program",
+           base + R"(, "entry_feed_factor": 0.5, "entry_feed_per_tooth_mm": 0.01,
+                 "program": {"clearance_mm": 100}})");
+  EXPECT_TRUE(problem_names_pointer(program.json, "/program/clearance_mm")) << program.body;
+  std::size_t at_root = 0;
+  for (const auto& error : program.json.at("errors")) at_root += error.at("pointer") == "" ? 1 : 0;
+  EXPECT_EQ(at_root, 2U) << "no speed, and both entry feeds: " << program.body;
+}
+
 TEST(BadInput, TeethMustBeAWholeNumber) {
   const std::string body = R"({"cutter_diameter_mm": 20, "teeth": TEETH, "spindle_speed_rpm": 1000,
       "feed_per_tooth_mm": 0.05, "length_mm": 100,

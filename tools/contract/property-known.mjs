@@ -14,9 +14,4 @@ export const KNOWN_FINDINGS = [
   // safe_z_mm was given).
   { about: 'pointer to an absent member: /exit/width_mm', path: '*', rule: 'pointer_to_absent_member', match: '/exit/width_mm exit_width_mismatch' },
   { about: 'pointer to an absent member: /program/clearance_mm', path: '/v1/main-time/program', rule: 'pointer_to_absent_member', match: '/program/clearance_mm not_above' },
-  // (5) /v1/main-time/program: an error of a rule between program options (not_above,
-  // dialect_only, requires_field, ...) hides the errors of the main-time alternatives
-  // (exactly_one_field for neither or both speeds, exclusive_fields for both entry feeds).
-  { about: 'main-time/program: program option rule errors hide exactly_one_field / exclusive_fields', path: '/v1/main-time/program',
-    rule: 'fault_not_named', match: '(no_alternative|two_alternatives|forbidden_combination)@' },
 ];
