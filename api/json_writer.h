@@ -1,6 +1,6 @@
 #pragma once
-// A JSON answer written straight to text: no document to build, walk, dump and free (issue 14:
-// for the entry-length answer those cost ~1 us of a 13 us request). Numbers are formatted by
+// A JSON answer written straight to text: no document to build, walk, dump and free (for the
+// entry-length answer those cost ~1 us of a 13 us request). Numbers are formatted by
 // nlohmann's own formatter, as dump() formats them, so an answer reads the same byte for byte
 // whichever way it was made. Members must be written in key order (the order dump() gives).
 

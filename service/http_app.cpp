@@ -168,7 +168,7 @@ int HttpApp::bind() {
 bool HttpApp::serve() {
   const bool served = server_->listen_after_bind();
   // The listener is closed; answer what is in flight before the caller tears the app down.
-  const auto limit = std::chrono::milliseconds(std::max(config_.http.request_timeout_ms, 1000L));
+  const auto limit = std::max(config_.http.limits.request_timeout, std::chrono::milliseconds{1000});
   if (!server_->drain(limit)) {
     spdlog::warn("shutdown: requests still in flight after {} ms were dropped", limit.count());
   }

@@ -59,7 +59,7 @@ class ConnectionStream final : public httplib::Stream {
 // The body of the request the calling thread is serving, framed by the engine before the library
 // parses anything (empty outside a request and for a request without one). The library reads a
 // body only after its pre-routing handler; the app answers a calculation there, from this view,
-// which saves the library's regex routing and its copy of the body (issue 14).
+// which saves the library's regex routing and its copy of the body on every request.
 std::string_view framed_request_body();
 
 // Makes `body` the calling thread's framed_request_body() for this object's lifetime.

@@ -181,7 +181,7 @@ class EventLoopEngine::Loop {
       const int fd = owned->fd.get();
       Connection& connection = *owned;
       table_.emplace(fd, std::move(owned));
-      connection.deadline = Clock::now() + engine_.settings_.keep_alive_timeout;
+      connection.deadline = Clock::now() + engine_.settings_.limits.keep_alive_timeout;
       if (!watch(connection, EPOLLIN, EPOLL_CTL_ADD)) close(fd);
     }
     return true;
@@ -225,7 +225,7 @@ class EventLoopEngine::Loop {
 
   // Reads what the socket has, up to the framing's buffer limit.
   Read read_input(Connection& connection) {
-    const std::size_t limit = engine_.settings_.framing.max_buffered_bytes();
+    const std::size_t limit = engine_.settings_.limits.max_buffered_bytes();
     if (connection.input_begin > 0) {  // compact: keep only unread bytes
       std::memmove(connection.input.data(), connection.input.data() + connection.input_begin,
                    connection.input_end - connection.input_begin);
@@ -287,7 +287,7 @@ class EventLoopEngine::Loop {
           return close(fd);
         case Flush::again:
           if (!watch(connection, EPOLLOUT)) return close(fd);
-          connection.deadline = Clock::now() + engine_.settings_.write_timeout;
+          connection.deadline = Clock::now() + engine_.settings_.limits.write_timeout;
           return;
         case Flush::done:
           break;
@@ -301,7 +301,7 @@ class EventLoopEngine::Loop {
       connection.deadline = connection.request_deadline;
     } else {
       if (engine_.stopping_()) return close(fd);
-      connection.deadline = now + engine_.settings_.keep_alive_timeout;
+      connection.deadline = now + engine_.settings_.limits.keep_alive_timeout;
       if (connection.input.size() > kIdleBufferBytes) std::vector<char>().swap(connection.input);
       if (connection.output.capacity() > kIdleBufferBytes) std::string().swap(connection.output);
     }
@@ -314,9 +314,9 @@ class EventLoopEngine::Loop {
     while (!connection.last_response && !connection.unread().empty()) {
       if (connection.pending_output() >= kOutputHighWater) return true;
       const std::string_view unread = connection.unread();
-      const RequestFrame frame = classify_request(unread, settings.framing);
+      const RequestFrame frame = classify_request(unread, settings.limits);
       if (frame.verdict == RequestFrame::Verdict::incomplete) {
-        if (unread.size() >= settings.framing.max_buffered_bytes()) {  // cannot happen: framing
+        if (unread.size() >= settings.limits.max_buffered_bytes()) {  // cannot happen: framing
           reject(connection, {400, "the request is over the size limit", {}, {}, {}});
           return false;
         }
@@ -358,7 +358,7 @@ class EventLoopEngine::Loop {
   void start_request(Connection& connection) {
     if (connection.in_request) return;
     connection.in_request = true;
-    const auto timeout = engine_.settings_.request_timeout;
+    const auto timeout = engine_.settings_.limits.request_timeout;
     connection.request_deadline =
         timeout.count() > 0 ? Clock::now() + timeout : Clock::time_point::max();
   }

@@ -35,17 +35,15 @@
 
 #include "service/http_connection.h"
 #include "service/http_framing.h"
+#include "service/http_limits.h"
 
 namespace cutcalc::service {
 
 struct EventLoopSettings {
   std::size_t loops = 2;
-  std::chrono::milliseconds keep_alive_timeout{5000};  // idle between requests
-  std::chrono::milliseconds request_timeout{10000};    // first byte to last of a request; 0: none
-  std::chrono::milliseconds write_timeout{5000};       // a response waiting on a full socket
   std::size_t keep_alive_max_requests = 10000;
   std::size_t max_connections = 10000;  // beyond: 503 and close
-  FramingLimits framing;
+  HttpLimits limits;                    // framing and timers
   bool tcp_nodelay = true;
 };
 

@@ -124,7 +124,7 @@ bool parse_content_length(std::string_view value, bool& seen, std::uint64_t& len
 // Walks a chunked body from `pos` (RFC 9112 7.1). Sets the frame's wire and body sizes when the
 // last chunk and the trailer section are in; `decoded`, when given, receives the content.
 RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame frame,
-                           const FramingLimits& limits, std::string* decoded) {
+                           const HttpLimits& limits, std::string* decoded) {
   std::size_t framing = 0;  // chunk sizes, extensions, CRLFs and trailers
   std::size_t content = 0;
   std::size_t fields = 0;
@@ -194,7 +194,7 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
 
 }  // namespace
 
-RequestFrame classify_request(std::string_view input, const FramingLimits& limits) {
+RequestFrame classify_request(std::string_view input, const HttpLimits& limits) {
   RequestFrame frame;
   std::size_t pos = 0;
   // Empty lines before the request line are ignored (RFC 9112 2.2).
@@ -348,8 +348,7 @@ std::string_view library_request(std::string_view input, const RequestFrame& fra
   }
   scratch.append("Content-Length: ").append(std::to_string(frame.body_bytes)).append("\r\n\r\n");
   RequestFrame walk = frame;
-  frame_chunked(input, pos, walk, FramingLimits{SIZE_MAX / 4, SIZE_MAX / 4, SIZE_MAX / 4},
-                &scratch);
+  frame_chunked(input, pos, walk, HttpLimits{SIZE_MAX / 4, SIZE_MAX / 4, SIZE_MAX / 4}, &scratch);
   return scratch;
 }
 

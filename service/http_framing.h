@@ -21,22 +21,9 @@
 #include <string>
 #include <string_view>
 
-namespace cutcalc::service {
+#include "service/http_limits.h"
 
-struct FramingLimits {
-  std::size_t max_head_bytes = 16 * 1024;  // request line + fields (and trailer fields)
-  std::size_t max_body_bytes = 64 * 1024;  // content, after chunked decoding
-  std::size_t max_fields = 100;            // header fields in one request
-  // The HTTP library's own line limits (CPPHTTPLIB_REQUEST_URI_MAX_LENGTH and _HEADER_MAX_LENGTH),
-  // so that it never refuses a line the engine has accepted.
-  std::size_t max_request_line_bytes = 8192;
-  std::size_t max_field_line_bytes = 8192;
-  // Unread input a connection buffers at most: the largest request that can be framed (head,
-  // body and chunk framing, which counts against the head's allowance).
-  [[nodiscard]] std::size_t max_buffered_bytes() const {
-    return 2 * max_head_bytes + max_body_bytes;
-  }
-};
+namespace cutcalc::service {
 
 struct RequestFrame {
   enum class Verdict { incomplete, complete, reject };
@@ -59,7 +46,7 @@ struct RequestFrame {
 };
 
 // Frames the request at the start of `input` (unread bytes of a connection).
-RequestFrame classify_request(std::string_view input, const FramingLimits& limits);
+RequestFrame classify_request(std::string_view input, const HttpLimits& limits);
 
 // The bytes the HTTP library is to parse for a complete frame: a view of `input` when the request
 // can be read as it came (Content-Length or no body, no Expect), otherwise the request rewritten

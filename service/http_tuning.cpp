@@ -16,6 +16,10 @@ namespace {
 constexpr std::size_t kReservedDescriptors = 64;
 constexpr std::size_t kMaxConnectionsCap = 65536;
 
+static_assert(HttpLimits{}.max_request_line_bytes == CPPHTTPLIB_REQUEST_URI_MAX_LENGTH &&
+                  HttpLimits{}.max_field_line_bytes == CPPHTTPLIB_HEADER_MAX_LENGTH,
+              "the engine must never accept a line the HTTP library refuses");
+
 // httplib's accept loop hands each accepted socket to process_and_close_socket() through its task
 // queue; TunedServer only passes the socket on to an event loop, which never blocks, so it runs
 // right on the accept thread.
@@ -68,12 +72,11 @@ TunedServer::TunedServer(const HttpTuning& tuning, EventLoopEngine::RenderError 
   apply_http_tuning(*this, tuning);
   EventLoopSettings settings;
   settings.loops = effective_event_loop_threads(tuning);
-  settings.keep_alive_timeout = std::chrono::seconds{std::max(tuning.keep_alive_timeout_s, 0L)};
-  settings.request_timeout = std::chrono::milliseconds{std::max(tuning.request_timeout_ms, 0L)};
-  settings.write_timeout = std::chrono::milliseconds{std::max(tuning.write_timeout_ms, 1L)};
+  settings.limits = tuning.limits;
+  settings.limits.write_timeout =
+      std::max(tuning.limits.write_timeout, std::chrono::milliseconds{1});
   settings.keep_alive_max_requests = std::max<std::size_t>(tuning.keep_alive_max_requests, 1);
   settings.max_connections = effective_max_connections(tuning);
-  settings.framing.max_body_bytes = tuning.max_body_bytes;
   settings.tcp_nodelay = tuning.tcp_nodelay;
   engine_ = std::make_unique<EventLoopEngine>(
       settings,
@@ -96,8 +99,8 @@ bool TunedServer::process_and_close_socket(socket_t sock) {
 
 void apply_http_tuning(httplib::Server& server, const HttpTuning& tuning) {
   server.set_keep_alive_max_count(std::max<std::size_t>(tuning.keep_alive_max_requests, 1));
-  server.set_keep_alive_timeout(std::max(tuning.keep_alive_timeout_s, 0L));
-  server.set_payload_max_length(tuning.max_body_bytes);
+  server.set_keep_alive_timeout(tuning.limits.keep_alive_timeout.count());
+  server.set_payload_max_length(tuning.limits.max_body_bytes);
   // Set on the listening socket; Linux copies it to every accepted socket.
   server.set_tcp_nodelay(tuning.tcp_nodelay);
 }

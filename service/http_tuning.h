@@ -22,17 +22,15 @@
 
 #include "service/http_connection.h"
 #include "service/http_event_loop.h"
+#include "service/http_limits.h"
 
 namespace cutcalc::service {
 
 struct HttpTuning {
   std::size_t event_loop_threads = 0;           // 0: one per usable CPU (cpu_budget.h)
   std::size_t keep_alive_max_requests = 10000;  // requests per keep-alive connection
-  long keep_alive_timeout_s = 5;                // idle keep-alive connection closed after this
-  long request_timeout_ms = 10000;         // a whole request (head + body), from its first byte
-  long write_timeout_ms = 5000;            // a response waiting for the client to read it
-  std::size_t max_body_bytes = 64 * 1024;  // larger bodies: 413
-  std::size_t max_connections = 0;         // beyond: 503; 0: from the descriptor limit
+  HttpLimits limits;
+  std::size_t max_connections = 0;  // beyond: 503; 0: from the descriptor limit
   int listen_backlog = 1024;
   bool tcp_nodelay = true;
 };

@@ -3,7 +3,8 @@
 namespace cutcalc::api::entry {
 
 nlohmann::json to_json(const domain::entry::Position& position) {
-  // Member by member: a brace list builds each member through a temporary array (issue 14).
+  // Member by member: a brace list would build each member through a temporary two-element
+  // array, a cost paid on every answer of this hot endpoint.
   nlohmann::json position_json = nlohmann::json::object();
   position_json["x_mm"] = position.x_mm;
   position_json["y_mm"] = position.y_mm;

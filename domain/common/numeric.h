@@ -7,8 +7,15 @@
 
 namespace cutcalc::domain {
 
-inline double deg_to_rad(double deg) { return deg * std::numbers::pi / 180.0; }
-inline double rad_to_deg(double rad) { return rad * 180.0 / std::numbers::pi; }
+// Degrees to radians and back as x * (pi/180) and x * (180/pi) with the doubles the specs fix
+// (resultant-speeds.md section 3, roughness.md "Common rules"): the reference generator multiplies
+// by them, so angles copied from a response round-trip to the radians the server used.
+inline constexpr double kRadPerDeg = 0.017453292519943295;  // pi / 180
+inline constexpr double kDegPerRad = 57.29577951308232;     // 180 / pi
+static_assert(kRadPerDeg == std::numbers::pi / 180.0 && kDegPerRad == 180.0 / std::numbers::pi);
+
+inline double deg_to_rad(double deg) { return deg * kRadPerDeg; }
+inline double rad_to_deg(double rad) { return rad * kDegPerRad; }
 
 // sqrt(p^2 - q^2) evaluated as sqrt((p - q)(p + q)) so that tangency (p = q) is exactly 0 and
 // nearly equal arguments keep their digits; tiny negative products from rounding clamp to 0.

@@ -37,7 +37,7 @@ Kinematics make_kinematics(const ResultantSpeedsParams& params, double center_di
   k.omega1 = kTwoPi * params.tool_speed_rpm;
   k.omega2 = k.rotation_sign * kTwoPi * params.workpiece_speed_rpm;
   k.tool_feed_mm_per_min = params.tool_feed_mm_per_min;
-  const double lambda = params.edge_inclination_deg * kRadPerDeg;  // lambda
+  const double lambda = deg_to_rad(params.edge_inclination_deg);  // lambda
   k.cos_lambda = std::cos(lambda);
   k.sin_lambda = std::sin(lambda);
   k.middle_sense = params.milling;
@@ -46,9 +46,9 @@ Kinematics make_kinematics(const ResultantSpeedsParams& params, double center_di
 
 // V2, V4, V5, V7-V14
 ContactPointSpeeds contact_point_speeds(const Kinematics& k, double contact_angle_deg) {
-  const double R1 = k.tool_radius_mm;                 // R1
-  const double a_w = k.center_distance_mm;            // a_w
-  const double rho = contact_angle_deg * kRadPerDeg;  // rho
+  const double R1 = k.tool_radius_mm;                // R1
+  const double a_w = k.center_distance_mm;           // a_w
+  const double rho = deg_to_rad(contact_angle_deg);  // rho
   const double sin_rho = std::sin(rho);
   const double cos_rho = std::cos(rho);
 

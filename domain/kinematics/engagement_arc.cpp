@@ -21,7 +21,7 @@ constexpr double kArcSlackDeg = 1e-9;
 // Unlike the arccos of V3 it keeps its digits when rho_e is near 0 or 180 deg. The callers pass
 // factors that are positive in doubles, so no square root sees a negative argument.
 double half_angle_from_factors_deg(double inner, double outer) {
-  return 2.0 * std::atan2(std::sqrt(inner), std::sqrt(outer)) * kDegPerRad;
+  return rad_to_deg(2.0 * std::atan2(std::sqrt(inner), std::sqrt(outer)));
 }
 
 // V3b with a_w given: the test uses the same sums as the factors, so both factor pairs are

@@ -12,6 +12,8 @@
 #include <numbers>
 #include <string>
 
+#include "domain/common/golden_section.h"
+
 namespace cutcalc::domain::polygon::detail {
 
 namespace {
@@ -100,34 +102,13 @@ double polyline_distance(const Eigen::Vector2d& P, const PathSamples& samples, i
 // section until the bracket is <= 1e-12 delta (at most 80 iterations).
 std::optional<double> nearest_path_parameter(const CentrePath& path, const Eigen::Vector2d& J,
                                              double theta0, double theta1) {
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   const double bracket = 1e-12 * path.shape().delta;
   auto f = [&](double theta) { return (path.point_in_phase(0, theta) - J).squaredNorm(); };
-  double a = theta0;
-  double b = theta1;
-  double x1 = b - ratio * (b - a);
-  double x2 = a + ratio * (b - a);
-  double f1 = f(x1);
-  double f2 = f(x2);
-  for (int iteration = 0; iteration < kGoldenMaxIterations && b - a > bracket; ++iteration) {
-    if (f1 < f2) {
-      b = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = b - ratio * (b - a);
-      f1 = f(x1);
-    } else {
-      a = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = a + ratio * (b - a);
-      f2 = f(x2);
-    }
-  }
-  if (!(b - a <= bracket)) {
+  const GoldenSection s = golden_section_minimum(f, theta0, theta1, bracket, kGoldenMaxIterations);
+  if (!(s.b - s.a <= bracket)) {
     return std::nullopt;
   }
-  return 0.5 * (a + b);
+  return s.midpoint();
 }
 
 // P18: knot i of ellipse arc 0 for m biarcs: theta_i = i delta / m, the exact point and unit

@@ -14,6 +14,8 @@
 #include <string_view>
 #include <utility>
 
+#include "domain/common/numeric.h"
+
 namespace cutcalc::domain::polygon::detail {
 
 namespace {
@@ -195,8 +197,7 @@ void write_body(Lines& out, const ProgramLayout& layout, const PrintedLoop& loop
       out.word('I', block.I).word('J', block.J);
       if (c_axis) {
         // Degrees, in every unit system.
-        out.word('C', program::format_fixed(-(180.0 / std::numbers::pi) * (t_loop + block.t_end),
-                                            fmt.decimals));
+        out.word('C', program::format_fixed(-rad_to_deg(t_loop + block.t_end), fmt.decimals));
       }
       out.end_line();
     }

@@ -12,6 +12,7 @@
 #include <limits>
 #include <numbers>
 
+#include "domain/common/golden_section.h"
 #include "domain/polygon/fitted_arc.h"
 
 namespace cutcalc::domain::polygon::detail {
@@ -139,30 +140,11 @@ std::vector<double> loop_minima(const PolygonShape& shape, std::size_t count, co
       }
     }
   }
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   for (std::size_t i = 0; i < count; ++i) {
-    double a = (best_pose[i] - 1) * step;
-    double b = (best_pose[i] + 1) * step;
-    double x1 = b - ratio * (b - a);
-    double x2 = a + ratio * (b - a);
-    double f1 = f(x1, i);
-    double f2 = f(x2, i);
-    for (int iteration = 0; iteration < kGoldenIterations; ++iteration) {
-      if (f1 < f2) {
-        b = x2;
-        x2 = x1;
-        f2 = f1;
-        x1 = b - ratio * (b - a);
-        f1 = f(x1, i);
-      } else {
-        a = x1;
-        x1 = x2;
-        f1 = f2;
-        x2 = a + ratio * (b - a);
-        f2 = f(x2, i);
-      }
-    }
-    best[i] = std::min({best[i], f1, f2});
+    const GoldenSection s =
+        golden_section_minimum([&](double t) { return f(t, i); }, (best_pose[i] - 1) * step,
+                               (best_pose[i] + 1) * step, 0.0, kGoldenIterations);
+    best[i] = std::min(best[i], s.smallest_value());
   }
   return best;
 }

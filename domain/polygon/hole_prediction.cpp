@@ -10,6 +10,8 @@
 #include <limits>
 #include <numbers>
 
+#include "domain/common/golden_section.h"
+
 namespace cutcalc::domain::polygon::detail {
 
 namespace {
@@ -45,29 +47,10 @@ class Sides {
   std::array<Eigen::Vector2d, 12> u_{};
 };
 
-// Golden-section maximum of the penetration over fractions [a, b] of a segment.
+// P26: golden-section maximum of the penetration over fractions [a, b] of a segment.
 double refine_maximum(const Sides& sides, const MotionSegment& segment, double a, double b) {
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-  double x1 = b - ratio * (b - a);
-  double x2 = a + ratio * (b - a);
-  double f1 = sides.at(segment, x1);
-  double f2 = sides.at(segment, x2);
-  for (int iteration = 0; iteration < 40 && b - a > 1e-7; ++iteration) {
-    if (f1 > f2) {
-      b = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = b - ratio * (b - a);
-      f1 = sides.at(segment, x1);
-    } else {
-      a = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = a + ratio * (b - a);
-      f2 = sides.at(segment, x2);
-    }
-  }
-  return std::max(f1, f2);
+  const auto negated = [&](double fraction) { return -sides.at(segment, fraction); };
+  return -golden_section_minimum(negated, a, b, 1e-7, 40).smallest_value();
 }
 
 }  // namespace

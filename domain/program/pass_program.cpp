@@ -3,8 +3,8 @@
 #include "domain/program/pass_program.h"
 
 #include <cmath>
-#include <numbers>
 
+#include "domain/common/numeric.h"
 #include "domain/program/dialect_writer.h"
 #include "domain/program/program_model.h"
 
@@ -26,7 +26,7 @@ std::vector<Traverse> traverses(const entry::MainTimeParams& params,
                                 const entry::MainTimeResult& main_time) {
   const std::size_t lateral = main_time.lateral_passes.size();
   const bool strips = params.entry.kind == ContourKind::straight && lateral > 1;
-  const double cot_alpha = 1.0 / std::tan(params.entry.angle_deg * std::numbers::pi / 180.0);
+  const double cot_alpha = cot_deg(params.entry.angle_deg);  // 0 exactly at 90 deg
   std::vector<Traverse> out;
   out.reserve(lateral);
   for (std::size_t i = 0; i < lateral; ++i) {

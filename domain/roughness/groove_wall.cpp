@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "domain/common/numeric.h"
 #include "domain/roughness/crest_branches.h"
 #include "domain/roughness/units.h"
 
@@ -11,7 +12,6 @@ namespace cutcalc::domain::roughness {
 
 namespace {
 
-using detail::kRadPerDeg;
 using detail::kUmPerMm;
 
 struct Crest {
@@ -37,9 +37,9 @@ Crest crest_height(double S, double rho, const detail::MinorEdgeAngle& phi1) {
 
 // R1-R8
 Result<GrooveWallResult> compute_groove_wall_roughness(const GrooveWallParams& params) {
-  const double S = params.feed_mm;                                   // S
-  const double rho = params.nose_radius_mm;                          // rho
-  const double phi1_rad = params.minor_edge_angle_deg * kRadPerDeg;  // phi1
+  const double S = params.feed_mm;                                  // S
+  const double rho = params.nose_radius_mm;                         // rho
+  const double phi1_rad = deg_to_rad(params.minor_edge_angle_deg);  // phi1
   // A phi1 too small to survive the conversion is phi1 = 0 for the model as well.
   if (phi1_rad == 0.0) {
     // R4 with phi1 = 0: the minor edge is the wall itself, so Rz = 0 for every feed and no target

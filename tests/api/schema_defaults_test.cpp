@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "support/project_contract.h"
+#include "support/request_schema.h"
 #include "support/test_server.h"
 
 #ifndef CUTCALC_REFERENCE_DIR
@@ -22,42 +22,6 @@ namespace cutcalc::testing {
 namespace {
 
 using nlohmann::json;
-
-const json& document() {
-  static const json loaded = test_support::project_contract().document();
-  return loaded;
-}
-
-// A local "#/components/schemas/X" reference resolved (schemas here only use local ones).
-const json& resolve(const json& schema) {
-  if (schema.is_object() && schema.contains("$ref")) {
-    const std::string ref = schema.at("$ref").get<std::string>();
-    return resolve(document().at(json::json_pointer(ref.substr(1))));
-  }
-  return schema;
-}
-
-// Whether `instance` can be the object `branch` describes: its consts match, its required fields
-// are there and, when the branch is closed, it has no other field.
-bool fits(const json& branch, const json& instance) {
-  if (!instance.is_object() || !branch.contains("properties")) return false;
-  const json& properties = branch.at("properties");
-  for (const auto& [key, property] : properties.items()) {
-    const json& sub = resolve(property);
-    if (sub.contains("const") && instance.contains(key) && instance.at(key) != sub.at("const")) {
-      return false;
-    }
-  }
-  for (const json& key : branch.value("required", json::array())) {
-    if (!instance.contains(key.get<std::string>())) return false;
-  }
-  if (branch.value("additionalProperties", json(true)) == json(false)) {
-    for (const auto& [key, value] : instance.items()) {
-      if (!properties.contains(key)) return false;
-    }
-  }
-  return true;
-}
 
 struct Insertion {
   std::string pointer;  // where the default goes
@@ -73,14 +37,14 @@ void collect(const json& schema_or_ref, const json& instance, const std::string&
     const std::string ref = schema_or_ref.at("$ref").get<std::string>();
     schema_name = ref.substr(ref.rfind('/') + 1);
   }
-  const json& schema = resolve(schema_or_ref);
+  const json& schema = resolve_schema(schema_or_ref);
   if (!schema.is_object()) return;
   for (const json& part : schema.value("allOf", json::array())) {
     collect(part, instance, pointer, schema_name, out);
   }
   for (const char* choice : {"oneOf", "anyOf"}) {
     for (const json& branch : schema.value(choice, json::array())) {
-      if (fits(resolve(branch), instance)) {
+      if (fits_branch(resolve_schema(branch), instance)) {
         collect(branch, instance, pointer, schema_name, out);
         break;
       }
@@ -88,7 +52,7 @@ void collect(const json& schema_or_ref, const json& instance, const std::string&
   }
   if (instance.is_object() && schema.contains("properties")) {
     for (const auto& [key, property] : schema.at("properties").items()) {
-      const json& sub = resolve(property);
+      const json& sub = resolve_schema(property);
       const std::string child = pointer + "/" + key;
       const json& with_default = property.contains("default") ? property : sub;
       if (with_default.contains("default")) {
@@ -117,7 +81,7 @@ void declared_defaults(const json& schema_or_ref, const std::string& name,
     schema_name = ref.substr(ref.rfind('/') + 1);
     if (!seen_schemas.insert(schema_name).second) return;
   }
-  const json& schema = resolve(schema_or_ref);
+  const json& schema = resolve_schema(schema_or_ref);
   if (!schema.is_object()) return;
   for (const char* list : {"allOf", "oneOf", "anyOf"}) {
     for (const json& part : schema.value(list, json::array())) {
@@ -126,30 +90,13 @@ void declared_defaults(const json& schema_or_ref, const std::string& name,
   }
   const json properties = schema.value("properties", json::object());  // named: items() views it
   for (const auto& [key, property] : properties.items()) {
-    if (property.contains("default") || resolve(property).contains("default")) {
+    if (property.contains("default") || resolve_schema(property).contains("default")) {
       out.insert(schema_name + "." + key);
     }
     declared_defaults(property, schema_name, seen_schemas, out);
   }
   if (schema.contains("items"))
     declared_defaults(schema.at("items"), schema_name, seen_schemas, out);
-}
-
-// The requests every default is tried in: the reference cases answered 200 and the operation's
-// documented request examples (the only ones with a polygon `program` object).
-std::vector<std::pair<std::string, json>> base_requests(const json& reference,
-                                                        const json& operation_body) {
-  std::vector<std::pair<std::string, json>> bases;
-  for (const json& item : reference.at("cases")) {
-    if (item.at("expect").at("status") == 200) {
-      bases.emplace_back(item.at("id").get<std::string>(), item.at("request"));
-    }
-  }
-  const json examples = operation_body.value("examples", json::object());  // items() views it
-  for (const auto& [name, example] : examples.items()) {
-    bases.emplace_back("example " + name, example.at("value"));
-  }
-  return bases;
 }
 
 TEST(SchemaDefaults, EveryDefaultSentExplicitlyGivesTheAnswerOfOmittingIt) {
@@ -161,13 +108,7 @@ TEST(SchemaDefaults, EveryDefaultSentExplicitlyGivesTheAnswerOfOmittingIt) {
     if (file.path().extension() != ".json") continue;
     const json reference = load_reference(file.path().filename().string());
     const std::string path = reference.at("endpoint").get<std::string>();
-    const json& body = document()
-                           .at("paths")
-                           .at(path)
-                           .at("post")
-                           .at("requestBody")
-                           .at("content")
-                           .at("application/json");
+    const json& body = request_body(path);
     const json& schema = body.at("schema");
     declared_defaults(schema, "", seen_schemas, declared);
     for (const auto& [name, request] : base_requests(reference, body)) {

@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "domain/common/golden_section.h"
+
 namespace cutcalc::test::gcode {
 
 namespace {
@@ -96,29 +98,9 @@ ExactCentrePath::Nearest ExactCentrePath::nearest(Vec2 p) const {
     const Vec2 diff = point(t) - p;
     return dot(diff, diff);
   };
-  const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
-  double lo = sample_t_[best] - step;
-  double hi = sample_t_[best] + step;
-  double x1 = hi - golden * (hi - lo);
-  double x2 = lo + golden * (hi - lo);
-  double f1 = dist2(x1);
-  double f2 = dist2(x2);
-  for (int iter = 0; iter < 200 && hi - lo > 1e-14 * loop_; ++iter) {
-    if (f1 <= f2) {
-      hi = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = hi - golden * (hi - lo);
-      f1 = dist2(x1);
-    } else {
-      lo = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = lo + golden * (hi - lo);
-      f2 = dist2(x2);
-    }
-  }
-  double t = 0.5 * (lo + hi);
+  double t = domain::golden_section_minimum(dist2, sample_t_[best] - step, sample_t_[best] + step,
+                                            1e-14 * loop_, 200)
+                 .midpoint();
   // The refined minimum is never worse than the sample it started from.
   if (dist2(t) > best_d2) t = sample_t_[best];
   Nearest result;

@@ -13,7 +13,7 @@ namespace {
 
 using Verdict = RequestFrame::Verdict;
 
-const FramingLimits kLimits;
+const HttpLimits kLimits;
 
 RequestFrame frame(std::string_view input) { return classify_request(input, kLimits); }
 

@@ -73,26 +73,11 @@ export function apiClient(onSend = () => {}) {
     return { ok, status, json, text: answer, headers };
   }
 
-  // POSTs `body` plus the opt-in field `key` (plot geometry). A service that does not know the
-  // field yet answers 422 "unknown field" at /key: then the request is repeated without it, and
-  // the answer says `optInRefused`, so the page shows its numbers with a "no diagram data" note.
-  // With `retry` false the refused answer itself is returned (for requests made for a diagram
-  // only).
-  async function postWithOptIn(path, body, key, value, retry = true) {
-    const first = await postJson(path, { ...body, [key]: value });
-    const refused = first.status === 422 && Array.isArray(first.json?.errors);
-    const errors = refused ? first.json.errors : [];
-    if (!errors.some((e) => e.pointer === `/${key}`)) return first;
-    if (!retry) return { ...first, optInRefused: true };
-    const second = await postJson(path, body);
-    return { ...second, optInRefused: true };
-  }
-
-  return { postJson, postWithOptIn };
+  return { postJson };
 }
 
 // The client of requests nobody needs to repeat (downloads).
-export const { postJson, postWithOptIn } = apiClient();
+export const { postJson } = apiClient();
 
 // The file name of a Content-Disposition header (attachment; filename="x.ngc"), or `fallback`.
 export function fileNameOf(disposition, fallback) {

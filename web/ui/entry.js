@@ -54,7 +54,7 @@ export function init() {
     const extra = programBody.extra_path_mm;
     const straight = extra === undefined || (extra instanceof RawNumber && Number(extra.text) === 0);
     const [length, time, program] = await Promise.all([
-      api.postWithOptIn('/v1/entry-length', readBody(form, LENGTH), 'include_scheme', true),
+      api.postJson('/v1/entry-length', { ...readBody(form, LENGTH), include_scheme: true }),
       api.postJson('/v1/main-time', readBody(form, TIME)),
       straight ? api.postJson(PROGRAM_PATH, programBody) : Promise.resolve(null),
     ]);
@@ -161,13 +161,7 @@ function lengthResults(answer, container) {
   ];
   const scheme = body.scheme;
   if (!scheme || !scheme.entry) {
-    parts.push(
-      noDiagram(
-        answer.optInRefused
-          ? t('result.no_scheme_yet')
-          : t('result.no_scheme'),
-      ),
-    );
+    parts.push(noDiagram(t('result.no_scheme')));
     return parts;
   }
   parts.push(entryScheme(scheme, body, container));

@@ -34,7 +34,7 @@ export function init() {
   const result = document.getElementById('groove-result');
   return onCalculate(form, async (api) => {
     const body = readBody(form);
-    const answer = await api.postWithOptIn(PATH, body, 'curve_points', CURVE_POINTS);
+    const answer = await api.postJson(PATH, { ...body, curve_points: CURVE_POINTS });
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);
@@ -70,13 +70,7 @@ export function init() {
         ),
       );
     } else {
-      result.append(
-        noDiagram(
-          answer.optInRefused
-            ? t('result.no_curve_yet')
-            : t('result.no_curve'),
-        ),
-      );
+      result.append(noDiagram(t('result.no_curve')));
     }
   });
 }

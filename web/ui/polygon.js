@@ -29,7 +29,7 @@ export function init() {
 
   const calculator = onCalculate(form, async (api) => {
     const body = withoutDefaultProgram(readBody(form));
-    const answer = await api.postWithOptIn(PATH, body, 'include_geometry', true);
+    const answer = await api.postJson(PATH, { ...body, include_geometry: true });
     result.replaceChildren();
     if (!answer.ok) {
       calculated = null;
@@ -89,13 +89,7 @@ function programResults(answer, container) {
   if (geometry && Array.isArray(geometry.polygon) && Array.isArray(geometry.predicted_hole)) {
     parts.push(holeDiagram(geometry, container), cornerDiagram(geometry, body));
   } else {
-    parts.push(
-      noDiagram(
-        answer.optInRefused
-          ? t('result.no_geometry_yet')
-          : t('result.no_geometry'),
-      ),
-    );
+    parts.push(noDiagram(t('result.no_geometry')));
   }
   return parts;
 }

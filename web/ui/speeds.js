@@ -28,19 +28,13 @@ export function init() {
     }
     result.append(...pointResults(main.json));
     const [up, down] = await Promise.all([
-      api.postWithOptIn(PATH, { ...arcBody, milling: 'up' }, 'arc_samples', ARC_SAMPLES, false),
-      api.postWithOptIn(PATH, { ...arcBody, milling: 'down' }, 'arc_samples', ARC_SAMPLES, false),
+      api.postJson(PATH, { ...arcBody, milling: 'up', arc_samples: ARC_SAMPLES }),
+      api.postJson(PATH, { ...arcBody, milling: 'down', arc_samples: ARC_SAMPLES }),
     ]);
-    if (up.ok && down.ok && !up.optInRefused && !down.optInRefused) {
+    if (up.ok && down.ok) {
       result.append(speedPlot(up.json.points, down.json.points, main.json));
     } else {
-      result.append(
-        noDiagram(
-          up.optInRefused || down.optInRefused
-            ? t('result.no_arc_yet')
-            : t('result.no_arc'),
-        ),
-      );
+      result.append(noDiagram(t('result.no_arc')));
     }
   });
 }

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 
+#include "domain/common/golden_section.h"
 #include "domain/entry/closed_forms.h"
 #include "domain/entry/entry_length.h"
 #include "domain/entry/entry_test_support.h"
@@ -532,19 +533,11 @@ double sampled_extremum(const std::function<double(double)>& f, double a, double
       best = i;
     }
   }
-  double lo = a + (b - a) * std::max(0, best - 1) / n;
-  double hi = a + (b - a) * std::min(n, best + 1) / n;
-  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
-  for (int it = 0; it < 200 && hi - lo > 1e-14 * (1.0 + std::abs(lo)); ++it) {
-    const double m1 = hi - ratio * (hi - lo);
-    const double m2 = lo + ratio * (hi - lo);
-    if (g(m1) < g(m2)) {
-      hi = m2;
-    } else {
-      lo = m1;
-    }
-  }
-  best_value = std::min({best_value, g(lo), g(hi), g(0.5 * (lo + hi))});
+  const double lo = a + (b - a) * std::max(0, best - 1) / n;
+  const double hi = a + (b - a) * std::min(n, best + 1) / n;
+  const double width = 1e-14 * (1.0 + std::max(std::abs(lo), std::abs(hi)));
+  const auto s = cutcalc::domain::golden_section_minimum(g, lo, hi, width, 200);
+  best_value = std::min({best_value, g(s.a), g(s.b), s.smallest_value(), g(s.midpoint())});
   return sign * best_value;
 }
 

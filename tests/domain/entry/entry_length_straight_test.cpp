@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "domain/common/numeric.h"
 #include "domain/entry/closed_forms.h"
 #include "domain/entry/entry_length.h"
 #include "domain/entry/entry_test_support.h"
@@ -25,7 +26,7 @@ constexpr double kTol = 1e-9;    // mm, values from closed forms
 constexpr double kSpec3 = 5e-4;  // numbers the spec prints with 3 decimals
 constexpr double kSpec2 = 5e-3;  // numbers the spec prints with 2 decimals
 
-double deg(double d) { return d * std::numbers::pi / 180.0; }
+double deg(double d) { return cutcalc::domain::deg_to_rad(d); }
 
 }  // namespace
 

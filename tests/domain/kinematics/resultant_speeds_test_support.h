@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "domain/common/numeric.h"
 #include "domain/kinematics/resultant_speeds.h"
 
 namespace cutcalc::test::kinematics {
@@ -22,8 +23,8 @@ using domain::kinematics::ResultantSpeedsParams;
 using domain::kinematics::ResultantSpeedsResult;
 
 inline constexpr double kPi = std::numbers::pi;
-inline double radians(double deg) { return deg * (kPi / 180.0); }
-inline double degrees(double rad) { return rad * (180.0 / kPi); }
+inline double radians(double deg) { return domain::deg_to_rad(deg); }
+inline double degrees(double rad) { return domain::rad_to_deg(rad); }
 
 // The paper's flat (section 6): D32 part, flat 1 mm deep (a_w = 25), R1 = 10 end mill at
 // 3000 rpm, part at 10 rpm, tool feed +100 mm/min, default points.

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "domain/common/numeric.h"
 #include "domain/roughness/crest_branches.h"
 #include "domain/roughness/groove_wall.h"
 
@@ -17,7 +18,7 @@ using cutcalc::domain::roughness::compute_groove_wall_roughness;
 using cutcalc::domain::roughness::GrooveWallParams;
 namespace detail = cutcalc::domain::roughness::detail;
 
-constexpr double kRadPerDeg = 0.017453292519943295;
+using cutcalc::domain::kRadPerDeg;
 
 const double kRhos[] = {0.1, 0.2, 0.3, 0.5, 0.8, 1.2};
 const double kAngles[] = {0.0,  0.01, 0.1,  0.5,  1.0,  2.0,  5.0,  10.0,

@@ -9,6 +9,7 @@
 #include <limits>
 #include <random>
 
+#include "domain/common/numeric.h"
 #include "domain/common/result.h"
 #include "domain/roughness/crest_branches.h"
 #include "domain/roughness/groove_wall.h"
@@ -22,7 +23,7 @@ using cutcalc::domain::roughness::GrooveWallParams;
 using cutcalc::domain::roughness::GrooveWallResult;
 namespace detail = cutcalc::domain::roughness::detail;
 
-constexpr double kRadPerDeg = 0.017453292519943295;
+using cutcalc::domain::kRadPerDeg;
 
 // Half a unit in the last digit the spec prints, plus rounding slack.
 constexpr double printed(double last_digit) { return 0.5 * last_digit + 1e-12; }

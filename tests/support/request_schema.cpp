@@ -1,0 +1,67 @@
+#include "support/request_schema.h"
+
+#include "support/project_contract.h"
+
+namespace cutcalc::testing {
+
+using nlohmann::json;
+
+const json& openapi_document() {
+  static const json loaded = test_support::project_contract().document();
+  return loaded;
+}
+
+const json& resolve_schema(const json& schema) {
+  if (schema.is_object() && schema.contains("$ref")) {
+    const std::string ref = schema.at("$ref").get<std::string>();
+    return resolve_schema(openapi_document().at(json::json_pointer(ref.substr(1))));
+  }
+  return schema;
+}
+
+bool fits_branch(const json& branch, const json& instance) {
+  if (!instance.is_object() || !branch.contains("properties")) return false;
+  const json& properties = branch.at("properties");
+  for (const auto& [key, property] : properties.items()) {
+    const json& sub = resolve_schema(property);
+    if (sub.contains("const") && instance.contains(key) && instance.at(key) != sub.at("const")) {
+      return false;
+    }
+  }
+  for (const json& key : branch.value("required", json::array())) {
+    if (!instance.contains(key.get<std::string>())) return false;
+  }
+  if (branch.value("additionalProperties", json(true)) == json(false)) {
+    for (const auto& [key, value] : instance.items()) {
+      if (!properties.contains(key)) return false;
+    }
+  }
+  return true;
+}
+
+std::vector<std::pair<std::string, json>> base_requests(const json& reference,
+                                                        const json& operation_body) {
+  std::vector<std::pair<std::string, json>> bases;
+  for (const json& item : reference.at("cases")) {
+    if (item.at("expect").at("status") == 200) {
+      bases.emplace_back(item.at("id").get<std::string>(), item.at("request"));
+    }
+  }
+  const json examples = operation_body.value("examples", json::object());  // items() views it
+  for (const auto& [name, example] : examples.items()) {
+    bases.emplace_back("example " + name, example.at("value"));
+  }
+  return bases;
+}
+
+const json& request_body(const std::string& path) {
+  return openapi_document()
+      .at("paths")
+      .at(path)
+      .at("post")
+      .at("requestBody")
+      .at("content")
+      .at("application/json");
+}
+
+}  // namespace cutcalc::testing
