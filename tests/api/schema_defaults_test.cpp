@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "api/routes.h"
 #include "support/project_contract.h"
+#include "support/route_table_check.h"
 #include "support/test_server.h"
 
 #ifndef CUTCALC_REFERENCE_DIR
@@ -157,9 +159,9 @@ TEST(SchemaDefaults, EveryDefaultSentExplicitlyGivesTheAnswerOfOmittingIt) {
   std::set<std::string> declared;
   std::set<std::string> seen_schemas;
   int comparisons = 0;
-  for (const auto& file : std::filesystem::directory_iterator(CUTCALC_REFERENCE_DIR)) {
-    if (file.path().extension() != ".json") continue;
-    const json reference = load_reference(file.path().filename().string());
+  for (const std::string& file :
+       test_support::replayed_reference_files(CUTCALC_REFERENCE_DIR, api::calculation_routes())) {
+    const json reference = load_reference(file);
     const std::string path = reference.at("endpoint").get<std::string>();
     const json& body = document()
                            .at("paths")
