@@ -1,5 +1,6 @@
 #include "api/routes.h"
 
+#include <algorithm>
 #include <array>
 
 #include "api/entry/entry_length_endpoint.h"
@@ -13,16 +14,69 @@
 namespace cutcalc::api {
 
 std::span<const CalculationRoute> calculation_routes() {
+  using enum AnswerForms;
   static constexpr std::array routes = {
-      CalculationRoute{"/v1/entry-length", &entry::handle_entry_length},
-      CalculationRoute{"/v1/main-time", &entry::handle_main_time},
-      CalculationRoute{"/v1/main-time/program", &entry::handle_main_time_program},
-      CalculationRoute{"/v1/resultant-speeds", &kinematics::handle_resultant_speeds},
-      CalculationRoute{"/v1/roughness/groove-wall", &roughness::handle_groove_wall},
-      CalculationRoute{"/v1/roughness/bore-milling", &roughness::handle_bore_milling},
-      CalculationRoute{"/v1/polygon-hole/gcode", &polygon::handle_polygon_hole},
+      CalculationRoute{.path = "/v1/entry-length",
+                       .handler = &entry::handle_entry_length,
+                       .plot = {"include_scheme", "true", ""},
+                       .reference_files = {"entry-length.json"},
+                       .page_section = "entry"},
+      CalculationRoute{.path = "/v1/main-time",
+                       .handler = &entry::handle_main_time,
+                       .reference_files = {"main-time.json"},
+                       .page_section = "entry"},
+      CalculationRoute{.path = "/v1/main-time/program",
+                       .handler = &entry::handle_main_time_program,
+                       .forms = json_and_plain_text_program,
+                       .reference_files = {"main-time-program.json"},
+                       .page_section = "entry"},
+      CalculationRoute{.path = "/v1/resultant-speeds",
+                       .handler = &kinematics::handle_resultant_speeds,
+                       .plot = {"arc_samples", "91", "contact_angles_deg"},
+                       .reference_files = {"resultant-speeds.json"},
+                       .page_section = "speeds"},
+      CalculationRoute{.path = "/v1/roughness/groove-wall",
+                       .handler = &roughness::handle_groove_wall,
+                       .plot = {"curve_points", "121", ""},
+                       .reference_files = {"roughness-groove-wall.json"},
+                       .page_section = "groove"},
+      CalculationRoute{.path = "/v1/roughness/bore-milling",
+                       .handler = &roughness::handle_bore_milling,
+                       .reference_files = {"roughness-bore-milling.json"},
+                       .page_section = "bore"},
+      CalculationRoute{.path = "/v1/polygon-hole/gcode",
+                       .handler = &polygon::handle_polygon_hole,
+                       .forms = json_and_plain_text_program,
+                       .plot = {"include_geometry", "true", ""},
+                       .reference_files = {"polygon-hole.json"},
+                       .page_section = "polygon"},
   };
   return routes;
+}
+
+const CalculationRoute* find_calculation_route(std::string_view path) {
+  for (const CalculationRoute& route : calculation_routes()) {
+    if (path == route.path) {
+      return &route;
+    }
+  }
+  return nullptr;
+}
+
+std::span<const std::string_view> reference_files_of(const CalculationRoute& route) {
+  const auto end =
+      std::find(route.reference_files.begin(), route.reference_files.end(), std::string_view());
+  return {route.reference_files.begin(), end};
+}
+
+std::string route_slug(std::string_view path) {
+  if (path.starts_with("/v1/")) {
+    path.remove_prefix(4);
+  }
+  std::string slug(path);
+  std::replace(slug.begin(), slug.end(), '/', '_');
+  std::replace(slug.begin(), slug.end(), '-', '_');
+  return slug;
 }
 
 }  // namespace cutcalc::api

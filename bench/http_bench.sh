@@ -337,13 +337,20 @@ PY
 ENDPOINT_CASES=()
 if [[ $ENDPOINT_TABLE -eq 1 ]]; then
   mkdir -p "$RESULTS/requests"
-  python3 - "$REFERENCE" "$RESULTS/requests" "${PORTS[cutcalc]}" >"$RESULTS/endpoint_cases.txt" <<'PY' \
+  "$CUTCALC_BIN" --routes >"$RESULTS/routes.json" || die "$CUTCALC_BIN --routes failed"
+  python3 - "$REFERENCE" "$RESULTS/requests" "${PORTS[cutcalc]}" "$RESULTS/routes.json" \
+    >"$RESULTS/endpoint_cases.txt" <<'PY' \
     || die "could not prepare the per-endpoint requests (see above)"
 import glob, http.client, json, os, sys
 
 reference, out_dir, port = sys.argv[1], sys.argv[2], int(sys.argv[3])
+routes = json.load(open(sys.argv[4]))  # cutcalc --routes: the route table
+text_form = {r["path"] for r in routes if "plain_text" in r["forms"]}
+# reference/*.json plus the next/ files the route table lists
+files = sorted(glob.glob(os.path.join(reference, "*.json"))) + sorted(
+    os.path.join(reference, f) for r in routes for f in r["next_reference_files"])
 cases = []  # (name, kind, method, path, accept, body)
-for path in sorted(glob.glob(os.path.join(reference, "*.json"))):
+for path in files:
     doc = json.load(open(path))
     endpoint = doc["endpoint"]
     # The pass program is measured on the spec's worked example (2 x 3 passes).
@@ -354,7 +361,7 @@ for path in sorted(glob.glob(os.path.join(reference, "*.json"))):
         sys.exit(f"http_bench: no case expecting 200 in {path}")
     body = json.dumps(first["request"], separators=(",", ":"))
     name = endpoint.removeprefix("/v1/").replace("/", "-")
-    if endpoint in ("/v1/polygon-hole/gcode", "/v1/main-time/program"):  # a text form too
+    if endpoint in text_form:
         cases.append((name + ".json", "post", "POST", endpoint, "-", body))
         cases.append((name + ".text", "post", "POST", endpoint, "text/plain", body))
     else:

@@ -101,11 +101,15 @@ trap 'exit 130' INT
 trap 'exit 143' TERM
 
 # --- the request mix ---------------------------------------------------------------------------
-python3 - "$REFERENCE" >"$RESULTS/requests.tsv" <<'PY'
+"$CUTCALC_BIN" --routes >"$RESULTS/routes.json" || die "$CUTCALC_BIN --routes failed"
+python3 - "$REFERENCE" "$RESULTS/routes.json" >"$RESULTS/requests.tsv" <<'PY'
 import glob, json, os, sys
 
 lines = []
-for path in sorted(glob.glob(os.path.join(sys.argv[1], "*.json"))):
+# reference/*.json plus the next/ files the route table (cutcalc --routes) lists
+files = sorted(glob.glob(os.path.join(sys.argv[1], "*.json"))) + sorted(
+    os.path.join(sys.argv[1], f) for r in json.load(open(sys.argv[2])) for f in r["next_reference_files"])
+for path in files:
     doc = json.load(open(path))
     endpoint = doc["endpoint"]
     for case in doc["cases"]:

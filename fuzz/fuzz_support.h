@@ -1,6 +1,6 @@
 #pragma once
-// Shared body of the libFuzzer harnesses (one per endpoint, fuzz/*_fuzzer.cpp): arbitrary bytes go
-// through api::run_json_endpoint with the handler api::calculation_routes() registers for the
+// Shared body of the libFuzzer harness of the endpoints (fuzz/endpoint_fuzzer.cpp): arbitrary bytes
+// go through api::run_json_endpoint with the handler api::calculation_routes() registers for the
 // path, exactly as the service calls it, and every promise of the API is checked on the answer.
 // A broken promise prints what was broken and calls abort(), so libFuzzer keeps the input.
 

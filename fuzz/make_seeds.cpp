@@ -1,16 +1,22 @@
-// Writes the seed corpora of the fuzzers from the reference cases, so that no request is copied
-// into code: every case's `request` of <reference dir>/*.json becomes one file
-// <out dir>/<slug>/<case id>.json, the slug being the case file's endpoint without "/v1/" and
-// with '/' and '-' as '_' ("/v1/roughness/groove-wall" -> roughness_groove_wall; the fuzzer
-// <slug>_fuzzer and <slug>_text_fuzzer read it). Also writes <out dir>/reference_keys.dict: the
-// keys and string values of the requests as libFuzzer dictionary entries.
+// Writes what the fuzz run needs from the route table (api/routes.cpp), the reference cases and
+// openapi.yaml, so that no request, path or field name is copied into fuzz/:
+//  - <out dir>/harnesses.txt: one line "<harness> <path> <form>" per route and answer form, the
+//    harness named <slug>_fuzzer or <slug>_text_fuzzer (api::route_slug); scripts/ci-fuzz.sh runs
+//    endpoint_fuzzer once per line;
+//  - <out dir>/<slug>/<index>_<case id>.json: every case's `request` of the reference files
+//    (<reference dir>/*.json plus the next/ files the routes list), plus the same request asking
+//    for the route's plot data (its plot field) and, for the polygon program, other dialects;
+//  - <out dir>/tokens.dict: libFuzzer dictionary entries: the keys and string values of the
+//    requests, every property name and string enum/const of openapi.yaml, each plot field with
+//    its example value;
+//  - <out dir>/paths.dict: the calculation paths, for the engine fuzzer's dictionary.
 //
 // The byte-level engine fuzzer (http_engine_fuzzer) gets <out dir>/http_engine/: each reference
 // request as a whole HTTP/1.1 request (Content-Length; every third one chunked, every fifth with
 // Expect: 100-continue) followed by a pipelined GET, plus a few fixed exchanges (pipelines, HEAD,
 // OPTIONS, the request-smuggling shapes). Each seed's first byte chooses the piece sizes.
 //
-// Usage: cutcalc_fuzz_seeds <reference dir> <out dir>
+// Usage: cutcalc_fuzz_seeds <reference dir> <openapi.yaml> <out dir>
 
 #include <cstdio>
 #include <exception>
@@ -19,45 +25,77 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
+#include <yaml-cpp/yaml.h>
 #include <nlohmann/json.hpp>
+
+#include "api/routes.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// The request with the opt-in plot field of its endpoint set, when the endpoint has one and the
-// request does not already choose its points.
-std::optional<nlohmann::json> plot_request(const std::string& endpoint,
+// The request with the route's opt-in plot field set (and the member it cannot be combined with
+// dropped), when the route has one.
+std::optional<nlohmann::json> plot_request(const cutcalc::api::CalculationRoute& route,
                                            const nlohmann::json& request) {
-  if (!request.is_object()) {
+  if (!request.is_object() || route.plot.name.empty()) {
     return std::nullopt;
   }
   nlohmann::json plot = request;
-  if (endpoint == "/v1/entry-length") {
-    plot["include_scheme"] = true;
-  } else if (endpoint == "/v1/resultant-speeds" && !request.contains("contact_angles_deg")) {
-    plot["arc_samples"] = 91;
-  } else if (endpoint == "/v1/roughness/groove-wall") {
-    plot["curve_points"] = 121;
-  } else if (endpoint == "/v1/polygon-hole/gcode") {
-    plot["include_geometry"] = true;
-  } else {
-    return std::nullopt;
+  if (!route.plot.replaces.empty()) {
+    plot.erase(std::string(route.plot.replaces));
   }
+  plot[std::string(route.plot.name)] = nlohmann::json::parse(route.plot.example);
   return plot;
 }
 
-std::string slug_of(std::string endpoint) {
-  if (endpoint.rfind("/v1/", 0) == 0) {
-    endpoint.erase(0, 4);
-  }
-  for (char& c : endpoint) {
-    if (c == '/' || c == '-') {
-      c = '_';
+// reference/*.json plus the next/ files the routes list (api/routes.h).
+std::vector<fs::path> reference_files(const fs::path& reference_dir) {
+  std::set<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(reference_dir)) {
+    if (entry.path().extension() == ".json") {
+      files.insert(entry.path());
     }
   }
-  return endpoint;
+  for (const cutcalc::api::CalculationRoute& route : cutcalc::api::calculation_routes()) {
+    for (const std::string_view file : cutcalc::api::reference_files_of(route)) {
+      if (file.starts_with("next/")) {
+        files.insert(reference_dir / file);
+      }
+    }
+  }
+  return {files.begin(), files.end()};
+}
+
+// The property names and string enum and const values of an openapi.yaml node, as JSON strings.
+void collect_openapi_tokens(const YAML::Node& node, std::set<std::string>& tokens) {
+  if (node.IsMap()) {
+    for (const auto& member : node) {
+      const std::string key = member.first.as<std::string>();
+      if (key == "properties" && member.second.IsMap()) {
+        for (const auto& property : member.second) {
+          tokens.insert(nlohmann::json(property.first.as<std::string>()).dump());
+        }
+      } else if ((key == "enum" && member.second.IsSequence()) ||
+                 (key == "const" && member.second.IsScalar())) {
+        for (const YAML::Node& value :
+             member.second.IsSequence()
+                 ? std::vector<YAML::Node>(member.second.begin(), member.second.end())
+                 : std::vector<YAML::Node>{member.second}) {
+          if (value.IsScalar()) {
+            tokens.insert(nlohmann::json(value.as<std::string>()).dump());
+          }
+        }
+      }
+      collect_openapi_tokens(member.second, tokens);
+    }
+  } else if (node.IsSequence()) {
+    for (const YAML::Node& element : node) {
+      collect_openapi_tokens(element, tokens);
+    }
+  }
 }
 
 std::string file_name_of(const std::string& id, std::size_t index) {
@@ -159,52 +197,71 @@ void write_fixed_engine_seeds(const fs::path& corpus) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: %s <reference dir> <out dir>\n", argv[0]);
+  using cutcalc::api::CalculationRoute;
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: %s <reference dir> <openapi.yaml> <out dir>\n", argv[0]);
     return 2;
   }
   try {
     const fs::path reference_dir = argv[1];
-    const fs::path out_dir = argv[2];
+    const fs::path out_dir = argv[3];
     std::set<std::string> tokens;
+    collect_openapi_tokens(YAML::LoadFile(argv[2]), tokens);
     std::size_t files = 0;
     std::size_t seeds = 0;
     std::size_t engine_seeds = 0;
     const fs::path engine_corpus = out_dir / "http_engine";
     fs::create_directories(engine_corpus);
     write_fixed_engine_seeds(engine_corpus);
-    for (const auto& entry : fs::directory_iterator(reference_dir)) {
-      if (entry.path().extension() != ".json") {
+    std::ofstream harnesses(out_dir / "harnesses.txt");
+    std::ofstream paths(out_dir / "paths.dict");
+    for (const CalculationRoute& route : cutcalc::api::calculation_routes()) {
+      const std::string slug = cutcalc::api::route_slug(route.path);
+      harnesses << slug << "_fuzzer " << route.path << " json\n";
+      if (route.forms == cutcalc::api::AnswerForms::json_and_plain_text_program) {
+        harnesses << slug << "_text_fuzzer " << route.path << " plain_text\n";
+      }
+      paths << dict_entry(route.path) << '\n';
+      if (!route.plot.name.empty()) {
+        tokens.insert('"' + std::string(route.plot.name) + "\":" + std::string(route.plot.example));
+      }
+      fs::create_directories(out_dir / slug);
+    }
+    for (const fs::path& file : reference_files(reference_dir)) {
+      std::ifstream in(file);
+      const nlohmann::json reference = nlohmann::json::parse(in);
+      const std::string endpoint = reference.at("endpoint").get<std::string>();
+      const CalculationRoute* route = cutcalc::api::find_calculation_route(endpoint);
+      if (route == nullptr) {
+        std::fprintf(stderr, "cutcalc_fuzz_seeds: %s: %s is no route, skipped\n", file.c_str(),
+                     endpoint.c_str());
         continue;
       }
-      std::ifstream in(entry.path());
-      const nlohmann::json reference = nlohmann::json::parse(in);
-      const fs::path corpus = out_dir / slug_of(reference.at("endpoint").get<std::string>());
-      fs::create_directories(corpus);
+      const fs::path corpus = out_dir / cutcalc::api::route_slug(endpoint);
+      const std::string prefix = file.parent_path().filename() == "next" ? "next-" : "";
       std::size_t index = 0;
       for (const auto& reference_case : reference.at("cases")) {
         const nlohmann::json& request = reference_case.at("request");
-        const std::string name = file_name_of(reference_case.value("id", ""), index++);
+        const std::string name = prefix + file_name_of(reference_case.value("id", ""), index++);
         std::ofstream(corpus / name) << request.dump();
         collect_tokens(request, tokens);
         ++seeds;
         // Every third chunked, every fifth (of the rest) with Expect: 100-continue.
         const int form = engine_seeds % 3 == 1 ? 1 : engine_seeds % 5 == 2 ? 2 : 0;
         const char chooser = static_cast<char>(engine_seeds % 4 == 0 ? 0 : engine_seeds % 13 + 1);
-        write_engine_seed(
-            engine_corpus, name, chooser,
-            http_request(reference.at("endpoint").get<std::string>(), request.dump(), form) +
-                "GET /healthz HTTP/1.1\r\nHost: cutcalc\r\n\r\n");
+        write_engine_seed(engine_corpus, name, chooser,
+                          http_request(endpoint, request.dump(), form) +
+                              "GET /healthz HTTP/1.1\r\nHost: cutcalc\r\n\r\n");
         ++engine_seeds;
         // The same request asking for the web calculator's plot data, so that the fuzzers start
         // inside those code paths too.
-        if (const auto plot = plot_request(reference.at("endpoint").get<std::string>(), request)) {
+        if (const auto plot = plot_request(*route, request)) {
           std::ofstream(corpus / ("plot-" + name)) << plot->dump();
           ++seeds;
         }
         // Polygon programs in another dialect and unit (programs.md section 2), so that the
         // fuzzers start inside the dialect writers too.
-        if (reference.at("endpoint") == "/v1/polygon-hole/gcode" && request.is_object()) {
+        if (endpoint == "/v1/polygon-hole/gcode" && request.is_object()) {
           nlohmann::json dialect = request;
           dialect.erase("safe_z_mm");
           dialect["program"] = {{"dialect", seeds % 2 == 0 ? "fanuc" : "sinumerik"},
@@ -224,14 +281,14 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "no reference cases found in %s\n", reference_dir.c_str());
       return 1;
     }
-    std::ofstream dict(out_dir / "reference_keys.dict");
+    std::ofstream dict(out_dir / "tokens.dict");
     for (const std::string& token : tokens) {
       dict << dict_entry(token) << '\n';
     }
     std::printf(
-        "seeds: %zu requests (%zu HTTP exchanges) from %zu reference files, %zu dictionary"
-        " tokens\n",
-        seeds, engine_seeds, files, tokens.size());
+        "seeds: %zu requests (%zu HTTP exchanges) from %zu reference files for %zu routes, %zu"
+        " dictionary tokens\n",
+        seeds, engine_seeds, files, cutcalc::api::calculation_routes().size(), tokens.size());
   } catch (const std::exception& error) {
     std::fprintf(stderr, "cutcalc_fuzz_seeds: %s\n", error.what());
     return 1;

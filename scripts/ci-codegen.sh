@@ -60,6 +60,12 @@ mkdir -p "$OUT"
 # The generated code imports openapi-fetch, yaml and @types/node from tools/codegen.
 ln -s "$TOOLS/node_modules" "$OUT/node_modules"
 
+# ---------------------------------------------------------------- cutcalc
+# Started before generating: the client covers the reference files its route table lists
+# (`cutcalc --routes`: reference/*.json plus the listed next/ files).
+start_cutcalc "$BIN" "$WORK/cutcalc.log" codegen
+"$CUTCALC_BIN" --routes >"$WORK/routes.json" || die "$CUTCALC_BIN --routes failed"
+
 # ---------------------------------------------------------------- generate
 # --default-non-nullable=false: openapi-typescript (7.x) otherwise makes every property with a
 # `default` required in components/schemas, and the request schemas are components: a request
@@ -68,7 +74,8 @@ echo "=== codegen: openapi-typescript $(basename "$OPENAPI") -> build/codegen/sc
 "$BINS/openapi-typescript" "$OPENAPI" -o "$OUT/schema.ts" --default-non-nullable=false ||
   die "openapi-typescript failed on $OPENAPI"
 echo "=== codegen: reference client (tools/codegen/gen-reference-client.mjs)"
-node "$TOOLS/gen-reference-client.mjs" --openapi "$OPENAPI" --reference "$REFERENCE_DIR" --out "$OUT" ||
+node "$TOOLS/gen-reference-client.mjs" --openapi "$OPENAPI" --reference "$REFERENCE_DIR" \
+  --routes "$WORK/routes.json" --out "$OUT" ||
   die "gen-reference-client.mjs failed"
 echo "=== codegen: @hey-api/openapi-ts $(basename "$OPENAPI") -> build/codegen/heyapi/"
 HEYAPI_INPUT=$OPENAPI HEYAPI_OUTPUT=$OUT/heyapi "$BINS/openapi-ts" -f "$TOOLS/openapi-ts.config.mjs" ||
@@ -102,13 +109,12 @@ echo "=== codegen: tsc emit (JavaScript to run)"
 COMPILED=$(date +%s)
 
 # ---------------------------------------------------------------- run against cutcalc
-start_cutcalc "$BIN" "$WORK/cutcalc.log" codegen
 URL="http://127.0.0.1:$CUTCALC_PORT"
 status=0
 echo "=== codegen: reference client against cutcalc ($URL)"
 CUTCALC_URL=$URL node "$OUT/js/reference-client.js" || status=1
 echo "=== codegen: hey-api SDK against cutcalc ($URL)"
-CUTCALC_URL=$URL OPENAPI_FILE=$OPENAPI CUTCALC_REFERENCE_DIR=$REFERENCE_DIR \
+CUTCALC_URL=$URL OPENAPI_FILE=$OPENAPI CUTCALC_REFERENCE_DIR=$REFERENCE_DIR CUTCALC_ROUTES_FILE=$WORK/routes.json \
   node "$OUT/js-heyapi/heyapi-smoke.js" || status=1
 kill -0 "$CUTCALC_PID" 2>/dev/null || {
   tail -n 30 "$WORK/cutcalc.log" >&2

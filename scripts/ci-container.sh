@@ -206,7 +206,10 @@ if [[ "$commit" != unknown ]]; then
 fi
 
 # The one reference replayer (values, warnings, pointers, program facts, openapi.yaml).
-node tools/contract/replay.mjs --base-url "$base" --reference-dir "$ref_dir" | tee "$work/replay.log" \
+# The reference files: reference/*.json plus the next/ files the image's route table lists.
+pm run --rm --pull=never "$image" --routes >"$work/routes.json" || fail "cutcalc --routes in the image"
+node tools/contract/replay.mjs --base-url "$base" --reference-dir "$ref_dir" --routes "$work/routes.json" \
+  | tee "$work/replay.log" \
   || fail "reference cases (see above)"
 replay_line=$(tail -n 1 "$work/replay.log")
 

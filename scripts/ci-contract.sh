@@ -106,7 +106,7 @@ echo "=== contract: replay through Prism (cutcalc :$CUTCALC_PORT, Prism :$STRICT
 status=0
 PRISM_STRICT_URL="http://127.0.0.1:$STRICT_PORT" PRISM_RELAXED_URL="http://127.0.0.1:$RELAXED_PORT" \
   CUTCALC_URL="http://127.0.0.1:$CUTCALC_PORT" OPENAPI_FILE="$OPENAPI" \
-  node "$TOOLS/replay.mjs" --prism || status=$?
+  CUTCALC_BIN="$BIN" node "$TOOLS/replay.mjs" --prism || status=$?
 for name in strict relaxed; do
   pid_var="PRISM_${name^^}_PID"
   if ! kill -0 "${!pid_var}" 2>/dev/null; then

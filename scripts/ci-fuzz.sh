@@ -1,19 +1,22 @@
 #!/usr/bin/env bash
 # Fuzzing (CI step): builds the libFuzzer harnesses of fuzz/ with clang++ (ASan + UBSan, coverage
 # instrumentation; a project of its own in build/fuzz, apart from the gcc build), writes their seed
-# corpora from the reference requests (../shared/reference/*.json, each case's `request`), and runs
-# every harness for a bounded time. Fails on any crash, sanitizer report, timeout (> CUTCALC_FUZZ_TIMEOUT s for one
+# corpora from the reference requests (../shared/reference/*.json plus the next/ files the route
+# table lists, each case's `request`), and runs every harness for a bounded time. The request
+# harnesses are one per (route, answer form) of the route table (api/routes.cpp): the one binary
+# endpoint_fuzzer, run once per row of harnesses.txt (written by cutcalc_fuzz_seeds) with
+# CUTCALC_FUZZ_ROUTE and CUTCALC_FUZZ_FORM set, under the names <slug>_fuzzer and <slug>_text_fuzzer. Fails on any crash, sanitizer report, timeout (> CUTCALC_FUZZ_TIMEOUT s for one
 # input), leak, out-of-memory or broken API promise (fuzz/fuzz_support.h: status 500 or
 # undocumented, body not JSON, NaN or infinity, a negative length, a response or accepted request
 # outside openapi.yaml, a malformed G-code program). Findings are kept in build/fuzz/run/artifacts.
 #
-# The eighth harness, http_engine_fuzzer, feeds raw bytes to the whole service over a socketpair
+# The last harness, http_engine_fuzzer, feeds raw bytes to the whole service over a socketpair
 # (fuzz/http_engine_fuzzer.cpp: framing, pipelining, every endpoint; its oracle checks that the
 # answers are well-framed HTTP/1.1, never more than the requests, problem+json for errors, and
 # that a fresh connection is still served). Its dictionary is fuzz/http.dict.
 #
-# Time: 7 harnesses x CUTCALC_FUZZ_SECONDS (default 30) + the engine harness for
-# CUTCALC_FUZZ_ENGINE_SECONDS (default 90) = 5 minutes of fuzzing, plus the build (about 3 minutes
+# Time: one request harness per route and answer form (9 today) x CUTCALC_FUZZ_SECONDS (default 30)
+# + the engine harness for CUTCALC_FUZZ_ENGINE_SECONDS (default 90) = 6 minutes of fuzzing, plus the build (about 3 minutes
 # from scratch on two idle cores; incremental afterwards).
 #
 # Environment:
@@ -63,14 +66,22 @@ build_seconds=$((SECONDS - build_start))
 # --- seeds and dictionary
 rm -rf "$run_dir/seeds" "$run_dir/artifacts" "$run_dir/logs"
 mkdir -p "$run_dir/seeds" "$run_dir/artifacts" "$run_dir/logs"
-"$build_dir/cutcalc_fuzz_seeds" "$reference_dir" "$run_dir/seeds"
-cat fuzz/cutcalc.dict "$run_dir/seeds/reference_keys.dict" >"$run_dir/cutcalc.dict"
-cat fuzz/http.dict "$run_dir/seeds/reference_keys.dict" >"$run_dir/http.dict"
+"$build_dir/cutcalc_fuzz_seeds" "$reference_dir" openapi.yaml "$run_dir/seeds"
+cat fuzz/cutcalc.dict "$run_dir/seeds/tokens.dict" >"$run_dir/cutcalc.dict"
+cat fuzz/http.dict "$run_dir/seeds/paths.dict" "$run_dir/seeds/tokens.dict" >"$run_dir/http.dict"
 
+# harness name -> "path form", from the route table.
+declare -A harness_route=()
+all_fuzzers=()
+while read -r name path form; do
+  harness_route[$name]="$path $form"
+  all_fuzzers+=("$name")
+done <"$run_dir/seeds/harnesses.txt"
+all_fuzzers+=(http_engine_fuzzer)
 if [[ -n ${CUTCALC_FUZZERS:-} ]]; then
   read -r -a fuzzers <<<"$CUTCALC_FUZZERS"
 else
-  mapfile -t fuzzers <"$build_dir/fuzzers.txt"
+  fuzzers=("${all_fuzzers[@]}")
 fi
 if [[ -n $runs ]]; then
   echo "=== fuzz: ${#fuzzers[@]} harnesses, $runs inputs each"
@@ -97,8 +108,17 @@ total_execs=0
 for fuzzer in "${fuzzers[@]}"; do
   seeds=${fuzzer%_fuzzer}
   seeds=${seeds%_text}
-  if [[ ! -x $build_dir/$fuzzer || ! -d $run_dir/seeds/$seeds ]]; then
-    echo "ci-fuzz: no harness $fuzzer or no seeds $seeds (reference files in $reference_dir?)" >&2
+  binary=$build_dir/$fuzzer
+  route=()
+  if [[ $fuzzer != http_engine_fuzzer ]]; then
+    [[ -n ${harness_route[$fuzzer]:-} ]] ||
+      { echo "ci-fuzz: no harness $fuzzer (harnesses: ${all_fuzzers[*]})" >&2; exit 1; }
+    read -r route_path route_form <<<"${harness_route[$fuzzer]}"
+    route=(CUTCALC_FUZZ_ROUTE="$route_path" CUTCALC_FUZZ_FORM="$route_form")
+    binary=$build_dir/endpoint_fuzzer
+  fi
+  if [[ ! -x $binary || -z $(ls -A "$run_dir/seeds/$seeds" 2>/dev/null) ]]; then
+    echo "ci-fuzz: no harness $binary or no seeds $seeds (reference files in $reference_dir?)" >&2
     exit 1
   fi
   corpus=$build_dir/corpus/$fuzzer # kept between local runs; CI starts from the seeds
@@ -114,7 +134,7 @@ for fuzzer in "${fuzzers[@]}"; do
   log=$run_dir/logs/$fuzzer.log
   mkdir -p "$corpus"
   started=$SECONDS
-  "$build_dir/$fuzzer" "$corpus" "$run_dir/seeds/$seeds" -dict="$dict" \
+  env "${route[@]}" "$binary" "$corpus" "$run_dir/seeds/$seeds" -dict="$dict" \
     "${limit[@]}" -timeout="$timeout" -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
     -artifact_prefix="$run_dir/artifacts/$fuzzer-" >"$log" 2>&1 &
   fuzzer_pid=$!

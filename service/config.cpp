@@ -98,6 +98,7 @@ std::string usage() {
          "  --cors-origin O origin allowed to call from a browser, e.g. https://mes.example;\n"
          "                  repeatable or comma-separated, * for any (default none;\n"
          "                  env CUTCALC_CORS_ORIGINS)\n"
+         "  --routes        print the calculation endpoints as JSON and exit (for the tools)\n"
          "  --help, --version\n";
 }
 
@@ -118,6 +119,9 @@ ConfigOutcome parse_config(const std::vector<std::string>& args,
     }
     if (arg == "--version") {
       return {std::nullopt, {}, 0, true};
+    }
+    if (arg == "--routes") {
+      return {std::nullopt, {}, 0, false, true};
     }
     std::string value;
     std::string_view flag = arg;

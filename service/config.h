@@ -26,6 +26,8 @@ struct ConfigOutcome {
   std::string message;
   int exit_code = 0;
   bool print_version = false;
+  bool print_routes =
+      false;  // --routes: the calculation route table as JSON (api/route_table_json.h)
 };
 
 // args excludes argv[0]; getenv reads the environment (injectable for tests).

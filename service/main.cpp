@@ -7,6 +7,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "api/route_table_json.h"
 #include "service/build_info.h"
 #include "service/config.h"
 #include "service/cpu_budget.h"
@@ -20,6 +21,10 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   const ConfigOutcome outcome =
       parse_config(args, [](const char* name) { return std::getenv(name); });
+  if (outcome.print_routes) {
+    std::puts(cutcalc::api::calculation_routes_json().dump(2).c_str());
+    return 0;
+  }
   if (!outcome.config) {
     const std::string text = outcome.print_version ? "cutcalc " + std::string(build_version()) +
                                                          " (" + std::string(build_commit()) + ")\n"

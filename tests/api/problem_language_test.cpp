@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "api/routes.h"
+#include "support/route_table_check.h"
 #include "support/test_server.h"
 
 #ifndef CUTCALC_REFERENCE_DIR
@@ -56,9 +58,9 @@ Answer send(const std::string& method, const std::string& path, const std::strin
 // [path, request] of every reference case that the service refuses (422).
 std::vector<std::pair<std::string, json>> refused_reference_requests() {
   std::vector<std::pair<std::string, json>> refused;
-  for (const auto& file : std::filesystem::directory_iterator(CUTCALC_REFERENCE_DIR)) {
-    if (file.path().extension() != ".json") continue;
-    const json document = load_reference(file.path().filename().string());
+  for (const std::string& file :
+       test_support::replayed_reference_files(CUTCALC_REFERENCE_DIR, api::calculation_routes())) {
+    const json document = load_reference(file);
     for (const json& item : document.at("cases")) {
       if (item.at("expect").at("status") == 422) {
         refused.emplace_back(document.at("endpoint").get<std::string>(), item.at("request"));

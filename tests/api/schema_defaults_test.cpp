@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "api/routes.h"
 #include "support/request_schema.h"
+#include "support/route_table_check.h"
 #include "support/test_server.h"
 
 #ifndef CUTCALC_REFERENCE_DIR
@@ -104,9 +106,9 @@ TEST(SchemaDefaults, EveryDefaultSentExplicitlyGivesTheAnswerOfOmittingIt) {
   std::set<std::string> declared;
   std::set<std::string> seen_schemas;
   int comparisons = 0;
-  for (const auto& file : std::filesystem::directory_iterator(CUTCALC_REFERENCE_DIR)) {
-    if (file.path().extension() != ".json") continue;
-    const json reference = load_reference(file.path().filename().string());
+  for (const std::string& file :
+       test_support::replayed_reference_files(CUTCALC_REFERENCE_DIR, api::calculation_routes())) {
+    const json reference = load_reference(file);
     const std::string path = reference.at("endpoint").get<std::string>();
     const json& body = request_body(path);
     const json& schema = body.at("schema");
@@ -151,17 +153,11 @@ TEST(SchemaDefaults, EveryDefaultSentExplicitlyGivesTheAnswerOfOmittingIt) {
 // made every such request a 422).
 TEST(SchemaDefaults, AllDefaultsSentTogetherGiveTheAnswerOfOmittingThem) {
   int comparisons = 0;
-  for (const auto& file : std::filesystem::directory_iterator(CUTCALC_REFERENCE_DIR)) {
-    if (file.path().extension() != ".json") continue;
-    const json reference = load_reference(file.path().filename().string());
+  for (const std::string& file :
+       test_support::replayed_reference_files(CUTCALC_REFERENCE_DIR, api::calculation_routes())) {
+    const json reference = load_reference(file);
     const std::string path = reference.at("endpoint").get<std::string>();
-    const json& body = document()
-                           .at("paths")
-                           .at(path)
-                           .at("post")
-                           .at("requestBody")
-                           .at("content")
-                           .at("application/json");
+    const json& body = request_body(path);
     for (const auto& [name, request] : base_requests(reference, body)) {
       std::vector<Insertion> insertions;
       collect(body.at("schema"), request, "", "", insertions);

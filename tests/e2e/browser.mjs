@@ -5,6 +5,7 @@ import { after, before } from 'node:test';
 import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { loadRoutes, pageSections, replayedReferenceFiles } from '../../tools/routes/route_table.mjs';
 
 export const repo = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 // playwright-core lives in tools/e2e/node_modules (npm ci there); resolve it from that package.
@@ -17,6 +18,11 @@ export const env = (name, fallback) => {
 };
 export const REFERENCE_DIR = path.resolve(repo, env('CUTCALC_REFERENCE_DIR', path.join('..', 'shared', 'reference')));
 export const reference = name => JSON.parse(readFileSync(path.join(REFERENCE_DIR, name), 'utf8'));
+// The calculation route table (`cutcalc --routes` of CUTCALC_BIN, tools/routes/route_table.mjs):
+// the page's sections in order, and the reference files (reference/*.json plus the listed next/).
+export const ROUTES = loadRoutes();
+export const PAGE_SECTIONS = pageSections(ROUTES);
+export const referenceFiles = () => replayedReferenceFiles(REFERENCE_DIR, ROUTES);
 export const CHROMIUM = env('CHROMIUM_PATH', '/usr/bin/chromium');
 export const CHROMIUM_ARGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking'];
 // Debian's Chromium, headless: one per test file, launched before its tests and closed after

@@ -1,6 +1,6 @@
 // End-to-end test of the web calculator (GET /): Playwright (playwright-core) drives Debian's headless
-// Chromium against a live cutcalc, written against the page's DOM contract (five sections entry,
-// speeds, groove, bore, polygon; forms whose controls are named by the request's JSON Pointers;
+// Chromium against a live cutcalc, written against the page's DOM contract (the page sections of
+// the route table, `cutcalc --routes`, in its order; forms whose controls are named by the request's JSON Pointers;
 // results carrying data-result/data-value; SVG diagrams whose parts carry data-role).
 //
 // Per section it fills the form with a reference case read at run time from ../shared/reference
@@ -33,7 +33,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 
-import { env, chromiumForThisFile, reference, repo } from './browser.mjs';
+import { PAGE_SECTIONS, env, chromiumForThisFile, reference, repo } from './browser.mjs';
 
 const API = (env('CUTCALC_URL') ?? '').replace(/\/$/, '');
 if (!API) throw new Error('CUTCALC_URL is not set (the base URL of a running cutcalc)');
@@ -702,7 +702,8 @@ describe('calculator page at 1280 px', () => {
     await context?.close();
   });
 
-  test('five sections in order, a nav to them, forms with labelled controls', { timeout: TEST_MS }, async () => {
+  test('the route table\'s sections in order, a nav to them, forms with labelled controls', { timeout: TEST_MS }, async () => {
+    assert.deepEqual(SECTIONS.map(s => s.id), PAGE_SECTIONS, 'a case here for every page section of the route table (cutcalc --routes), in its order');
     const layout = await page.evaluate(() => {
       const sections = [...document.querySelectorAll('section[id]')].map(s => ({
         id: s.id,
@@ -733,11 +734,11 @@ describe('calculator page at 1280 px', () => {
         program: document.getElementById('polygon-program')?.tagName ?? null,
       };
     });
-    const wanted = SECTIONS.map(s => s.id);
+    const wanted = PAGE_SECTIONS;
     assert.deepEqual(
       layout.sections.map(s => s.id).filter(id => wanted.includes(id)),
       wanted,
-      'the five sections, in this order',
+      `the ${wanted.length} sections of the route table, in its order`,
     );
     for (const id of wanted) assert.ok(layout.navTargets.includes(id), `the nav has no link to #${id}`);
     assert.deepEqual(layout.duplicateIds, [], 'ids must be unique');
@@ -1016,7 +1017,7 @@ for (const width of [375, 1280]) {
       await page.evaluate(() => window.scrollTo(0, 0));
       if (width === 375) await page.screenshot({ path: path.join(ARTIFACT_DIR, 'calculator-375.png'), fullPage: true });
       await noHorizontalScroll(page, width);
-      console.log(`# ${width} px: five forms submitted with the keyboard (${tabs} Tab presses in all)`);
+      console.log(`# ${width} px: ${SECTIONS.length} forms submitted with the keyboard (${tabs} Tab presses in all)`);
       assert.deepEqual(log.problems, [], 'console errors, page errors or failed requests');
     });
   });

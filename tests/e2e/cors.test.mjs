@@ -18,7 +18,7 @@ import { readdirSync } from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
 
-import { REFERENCE_DIR, env, chromiumForThisFile, reference, repo } from './browser.mjs';
+import { REFERENCE_DIR, env, chromiumForThisFile, reference, referenceFiles, repo } from './browser.mjs';
 
 const BIN = path.resolve(repo, env('CUTCALC_BIN', path.join('build', 'release', 'service', 'cutcalc')));
 const TEST_MS = 120000;
@@ -73,7 +73,7 @@ function postPaths(yaml) {
 // The request of each endpoint's first 200 reference case.
 function referenceBodies() {
   const bodies = new Map();
-  for (const file of readdirSync(REFERENCE_DIR).filter(f => f.endsWith('.json')).sort()) {
+  for (const file of referenceFiles()) {
     const doc = reference(file);
     const kase = doc.cases.find(c => c.expect?.status === 200);
     if (kase && !bodies.has(doc.endpoint)) bodies.set(doc.endpoint, { id: kase.id, request: kase.request });

@@ -24,17 +24,14 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 
-import { env, chromiumForThisFile, repo } from './browser.mjs';
+import { PAGE_SECTIONS, ROUTES, env, chromiumForThisFile, repo } from './browser.mjs';
 import { API, ARTIFACT_DIR, PAGE_URL, TEST_MS, assertClean, openRecordedPage, settle } from './page_session.mjs';
 
-const SECTIONS = ['entry', 'speeds', 'groove', 'bore', 'polygon'];
-const SECTION_PATHS = {
-  entry: ['/v1/entry-length', '/v1/main-time', '/v1/main-time/program'],
-  speeds: ['/v1/resultant-speeds'],
-  groove: ['/v1/roughness/groove-wall'],
-  bore: ['/v1/roughness/bore-milling'],
-  polygon: ['/v1/polygon-hole/gcode'],
-};
+// The page sections and the endpoints each calls, from the route table (cutcalc --routes).
+const SECTIONS = PAGE_SECTIONS;
+const SECTION_PATHS = Object.fromEntries(
+  SECTIONS.map(id => [id, ROUTES.filter(r => r.page_section === id).map(r => r.path)]),
+);
 // The page's units that are lengths (units.js), with the power of the inch they convert by.
 const LENGTH_UNITS = { mm: 1, mm_per_tooth: 1, mm_per_rev: 1, mm_per_min: 1, mm2: 2 };
 const INCH_UNITS = { in: 1, in_per_tooth: 1, in_per_rev: 1, in_per_min: 1, in2: 2 };
@@ -201,7 +198,7 @@ describe('the Russian page', () => {
       await page.screenshot({ path: path.join(ARTIFACT_DIR, 'language-units-ru-error.png'), fullPage: false });
       // The browser reports the refused request it was asked to make; nothing else may appear.
       log.problems = log.problems.filter(p => !/status of 422 \(Unprocessable Entity\)/.test(p));
-      console.log(`# ru: 5 sections calculated, none shows any of ${english.length} English words; the API's message: ${message}`);
+      console.log(`# ru: ${SECTIONS.length} sections calculated, none shows any of ${english.length} English words; the API's message: ${message}`);
       await assertClean(page, log, 'Russian page');
     } finally {
       await context.close();

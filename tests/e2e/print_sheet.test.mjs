@@ -28,7 +28,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 
-import { env, chromiumForThisFile, repo } from './browser.mjs';
+import { PAGE_SECTIONS, env, chromiumForThisFile, repo } from './browser.mjs';
 import { API, ARTIFACT_DIR, PAGE_URL, QUIET_MS, TEST_MS, WAIT_MS, assertClean, settle } from './page_session.mjs';
 
 const run = promisify(execFile);
@@ -44,6 +44,10 @@ const SECTIONS = [
   { id: 'bore', title: 'Bore milling roughness', own: ['Cusp between adjacent tooth paths', 'Bore radius R'] },
   { id: 'polygon', title: 'Polygon-hole G-code', own: ['Inscribed diameter d', 'Arc-fit tolerance'] },
 ];
+// Sections here are optional, but each is a page section of the route table (cutcalc --routes).
+test('every section here is a page section of the route table, in its order', () => {
+  assert.deepEqual(SECTIONS.map(s => s.id), PAGE_SECTIONS.filter(id => SECTIONS.some(s => s.id === id)));
+});
 // Text of the page that is never on a sheet: navigation, buttons, the footer.
 const SCREEN_ONLY = ['Calculate', 'Print sheet', 'Copy link', 'Copy as curl', 'Download', 'cutcalc calculator', 'HTTP API contract'];
 

@@ -26,7 +26,7 @@ import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { promisify } from 'node:util';
 
-import { env, chromiumForThisFile, repo } from './browser.mjs';
+import { PAGE_SECTIONS, env, chromiumForThisFile, repo } from './browser.mjs';
 import { ARTIFACT_DIR, PAGE_URL, TEST_MS, WAIT_MS, assertClean, openRecordedPage, settle } from './page_session.mjs';
 
 // The requests one calculation of each section sends (entry: one pass, the setup and its
@@ -55,6 +55,10 @@ const SECTIONS = [
   { id: 'polygon', requests: { '/v1/polygon-hole/gcode': 1 }, edit: ['/faces', '5'] },
 ];
 const byId = id => SECTIONS.find(s => s.id === id);
+// Sections here are optional, but each is a page section of the route table (cutcalc --routes).
+test('every section here is a page section of the route table, in its order', () => {
+  assert.deepEqual(SECTIONS.map(s => s.id), PAGE_SECTIONS.filter(id => SECTIONS.some(s => s.id === id)));
+});
 
 const browser = chromiumForThisFile();
 before(() => mkdirSync(ARTIFACT_DIR, { recursive: true }));

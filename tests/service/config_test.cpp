@@ -70,6 +70,11 @@ TEST(Config, HelpAndVersionExitZero) {
   const ConfigOutcome version = parse({"--version"});
   EXPECT_FALSE(version.config);
   EXPECT_TRUE(version.print_version);
+  const ConfigOutcome routes = parse({"--routes"});
+  EXPECT_FALSE(routes.config);
+  EXPECT_EQ(routes.exit_code, 0);
+  EXPECT_TRUE(routes.print_routes);
+  EXPECT_FALSE(parse({}).print_routes);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "api/routes.h"
 #include "service/http_app.h"
 #include "service/route_table.h"
 #include "support/http_responses.h"
@@ -54,19 +55,19 @@ struct Exchange {
   }
 };
 
-// The request of the first 200 case of every reference file, by endpoint.
+// The request of the first 200 case of every endpoint's reference files (the route table's:
+// reference/*.json and the next/ files it lists), by endpoint.
 std::map<std::string, std::string> reference_bodies() {
   std::map<std::string, std::string> bodies;
-  for (const auto& file : std::filesystem::directory_iterator(CUTCALC_REFERENCE_DIR)) {
-    if (file.path().extension() != ".json") {
-      continue;
-    }
-    std::ifstream in(file.path());
-    const auto doc = nlohmann::json::parse(in);
-    for (const auto& c : doc["cases"]) {
-      if (c["expect"].value("status", 0) == 200) {
-        bodies.emplace(doc["endpoint"].get<std::string>(), c["request"].dump());
-        break;
+  for (const api::CalculationRoute& route : api::calculation_routes()) {
+    for (const std::string_view file : api::reference_files_of(route)) {
+      std::ifstream in(std::string(CUTCALC_REFERENCE_DIR) + "/" + std::string(file));
+      const auto doc = nlohmann::json::parse(in);
+      for (const auto& c : doc["cases"]) {
+        if (c["expect"].value("status", 0) == 200) {
+          bodies.emplace(doc["endpoint"].get<std::string>(), c["request"].dump());
+          break;
+        }
       }
     }
   }

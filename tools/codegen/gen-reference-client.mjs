@@ -16,18 +16,23 @@
 // Everything comes from openapi.yaml and the reference files at run time: each file's `endpoint`
 // (as tools/contract/replay.mjs reads it) and its cases. Nothing here is per case.
 //
-// Usage: node gen-reference-client.mjs --openapi FILE --reference DIR --out DIR
+// Usage: node gen-reference-client.mjs --openapi FILE --reference DIR [--routes FILE] --out DIR
+// DIR's *.json plus the next/ files the route table lists (--routes: what `cutcalc --routes`
+// printed; without it tools/routes/route_table.mjs asks CUTCALC_BIN or the release build).
 // Writes DIR/reference-client.ts, DIR/reference-checks.ts (copied), DIR/tsconfig.json and
 // DIR/package.json; prints the classification of every 422 case. Exit status 2 on a setup error.
-import { copyFileSync, mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { copyFileSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import YAML from 'yaml';
+import { loadRoutes, replayedReferenceFiles } from '../routes/route_table.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const { values: args } = parseArgs({
-  options: { openapi: { type: 'string' }, reference: { type: 'string' }, out: { type: 'string' } },
+  options: {
+    openapi: { type: 'string' }, reference: { type: 'string' }, out: { type: 'string' }, routes: { type: 'string' },
+  },
 });
 const die = message => {
   console.error(`gen-reference-client: ${message}`);
@@ -177,9 +182,9 @@ const CHECKED_EXPECT = new Set(['status', 'body', 'max', 'min', 'pointer']);
 
 let files;
 try {
-  files = readdirSync(args.reference).filter(f => f.endsWith('.json')).sort();
+  files = replayedReferenceFiles(args.reference, loadRoutes({ routesFile: args.routes }));
 } catch (e) {
-  die(`cannot read reference directory ${args.reference}: ${e.message}`);
+  die(`cannot read reference directory ${args.reference} or the route table: ${e.message}`);
 }
 if (files.length === 0) die(`no reference files in ${args.reference}`);
 

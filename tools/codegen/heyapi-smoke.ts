@@ -39,7 +39,13 @@ async function main(): Promise<void> {
     paths: Record<string, { post?: { operationId?: string } }>;
   };
   const operations = sdk as unknown as Record<string, unknown>;
-  for (const file of readdirSync(referenceDir!).filter(f => f.endsWith(".json")).sort()) {
+  // reference/*.json plus the next/ files of the route table (CUTCALC_ROUTES_FILE: cutcalc --routes).
+  const routesFile = process.env.CUTCALC_ROUTES_FILE;
+  const nextFiles = routesFile
+    ? (JSON.parse(readFileSync(routesFile, "utf8")) as { next_reference_files: string[] }[]).flatMap(r => r.next_reference_files)
+    : [];
+  const files = [...new Set([...readdirSync(referenceDir!).filter(f => f.endsWith(".json")), ...nextFiles])].sort();
+  for (const file of files) {
     const reference = JSON.parse(readFileSync(path.join(referenceDir!, file), "utf8")) as {
       endpoint: string;
       cases: { id: string; request: unknown; expect: { status: number } }[];

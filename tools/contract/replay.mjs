@@ -13,7 +13,9 @@
 //   --base-url URL       a running cutcalc (ci-container.sh: the container)
 //   --prism              through Prism (ci-contract.sh), from PRISM_STRICT_URL, PRISM_RELAXED_URL
 //                        and CUTCALC_URL; see below
-// Options: --reference-dir DIR (default <repo>/../shared/reference, or CUTCALC_REFERENCE_DIR),
+// Options: --reference-dir DIR (default <repo>/../shared/reference, or CUTCALC_REFERENCE_DIR): its
+// *.json plus the next/ files the route table lists (tools/routes/route_table.mjs; --routes FILE,
+// else the --start binary's, CUTCALC_ROUTES_FILE or CUTCALC_BIN's `cutcalc --routes`),
 // --openapi FILE (default <repo>/openapi.yaml, or OPENAPI_FILE), --per-file N (the first N cases
 // of each file, always with a non-200 case when the file has one; 0 = all), --concurrency N
 // (default 4, or REPLAY_CONCURRENCY), --verbose (or REPLAY_VERBOSE=1: every exchange).
@@ -48,11 +50,12 @@
 // case or the contract's description states, and a 200 reference request that Prism rejects.
 // Exit status: 0 clean, 1 failures, 2 setup error.
 import { spawn } from 'node:child_process';
-import { readFileSync, readdirSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
+import { loadRoutes, replayedReferenceFiles } from '../routes/route_table.mjs';
 import { Contract, isJsonMediaType } from './contract.mjs';
 
 const require = createRequire(import.meta.url);
@@ -62,6 +65,7 @@ const { values: opt } = parseArgs({
   options: {
     start: { type: 'string' }, 'base-url': { type: 'string' }, prism: { type: 'boolean' },
     'reference-dir': { type: 'string' }, openapi: { type: 'string' }, 'per-file': { type: 'string' },
+    routes: { type: 'string' },
     concurrency: { type: 'string' }, verbose: { type: 'boolean' },
   },
 });
@@ -119,9 +123,9 @@ function toleranceRule(doc, tol = {}) {
 function referenceCases() {
   let files;
   try {
-    files = readdirSync(REFERENCE_DIR).filter(f => f.endsWith('.json')).sort();
+    files = replayedReferenceFiles(REFERENCE_DIR, loadRoutes({ routesFile: opt.routes, bin: opt.start }));
   } catch (e) {
-    setupError(`cannot read reference directory ${REFERENCE_DIR}: ${e.message}`);
+    setupError(`cannot read reference directory ${REFERENCE_DIR} or the route table: ${e.message}`);
   }
   if (files.length === 0) setupError(`no reference files in ${REFERENCE_DIR}`);
   const cases = [];

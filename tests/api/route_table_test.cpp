@@ -1,0 +1,148 @@
+// The calculation route table (api/routes.h) against openapi.yaml, the reference files and the
+// web page: a route that lacks any of them, or an openapi calculation path without a route, fails
+// here. The fuzzers, their seeds and the browser tests iterate the same table, so a route has its
+// fuzz harness by being in it.
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "api/route_table_json.h"
+#include "api/routes.h"
+#include "support/project_contract.h"
+#include "support/route_table_check.h"
+
+#ifndef CUTCALC_REFERENCE_DIR
+#error "CUTCALC_REFERENCE_DIR must be defined"
+#endif
+#ifndef CUTCALC_WEB_DIR
+#error "CUTCALC_WEB_DIR must be defined"
+#endif
+
+namespace cutcalc {
+namespace {
+
+using nlohmann::json;
+using test_support::RouteTableInputs;
+
+std::string index_html() {
+  std::ifstream in(std::string(CUTCALC_WEB_DIR) + "/index.html");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+RouteTableInputs project_inputs(std::span<const api::CalculationRoute> routes) {
+  return {routes, test_support::project_contract().document(), CUTCALC_REFERENCE_DIR, index_html()};
+}
+
+std::string joined(const std::vector<std::string>& problems) {
+  std::string text;
+  for (const std::string& problem : problems) {
+    text += "\n  " + problem;
+  }
+  return text;
+}
+
+bool mentions(const std::vector<std::string>& problems, const std::string& words) {
+  return std::any_of(problems.begin(), problems.end(), [&](const std::string& problem) {
+    return problem.find(words) != std::string::npos;
+  });
+}
+
+TEST(RouteTable, EveryRouteHasItsOpenApiPathReferenceFilesPlotFieldAndPageSection) {
+  const auto problems =
+      test_support::route_table_problems(project_inputs(api::calculation_routes()));
+  EXPECT_TRUE(problems.empty()) << joined(problems);
+}
+
+TEST(RouteTable, ARouteLackingItsPathReferenceFileOrPageIsNamed) {
+  const std::array routes = {
+      api::CalculationRoute{.path = "/v1/grooving/cycle",
+                            .handler = nullptr,
+                            .forms = api::AnswerForms::json_and_plain_text_program,
+                            .plot = {"include_profile", "true", ""},
+                            .reference_files = {"grooving-cycle.json"},
+                            .page_section = "grooving"}};
+  const auto problems = test_support::route_table_problems(project_inputs(routes));
+  EXPECT_TRUE(mentions(problems, "/v1/grooving/cycle: no POST /v1/grooving/cycle in openapi.yaml"))
+      << joined(problems);
+  EXPECT_TRUE(mentions(problems, "grooving-cycle.json does not exist")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "no <section id=\"grooving\">")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "no nav link to #grooving")) << joined(problems);
+}
+
+TEST(RouteTable, AnOpenApiCalculationPathWithoutARouteIsNamed) {
+  RouteTableInputs inputs = project_inputs(api::calculation_routes());
+  inputs.openapi["paths"]["/v1/grooving/cycle"] = inputs.openapi["paths"]["/v1/main-time"];
+  const auto problems = test_support::route_table_problems(inputs);
+  EXPECT_TRUE(mentions(problems, "/v1/grooving/cycle: in openapi.yaml, not in the route table"))
+      << joined(problems);
+  EXPECT_EQ(problems.size(), 1U) << joined(problems);
+}
+
+TEST(RouteTable, WrongFormsPlotFieldAndReferenceFilesAreNamed) {
+  std::array routes = {api::CalculationRoute{.path = "/v1/main-time",
+                                             .handler = nullptr,
+                                             .forms = api::AnswerForms::json_and_plain_text_program,
+                                             .plot = {"include_scheme", "true", ""},
+                                             .reference_files = {"entry-length.json"},
+                                             .page_section = api::kNoPage}};
+  const auto problems = test_support::route_table_problems(project_inputs(routes));
+  EXPECT_TRUE(mentions(problems, "answers a text/plain program, openapi.yaml lists none"))
+      << joined(problems);
+  EXPECT_TRUE(mentions(problems, "its plot member include_scheme is not in the request schema"))
+      << joined(problems);
+  EXPECT_TRUE(mentions(problems, "entry-length.json checks /v1/entry-length")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "the reference file main-time.json is not listed"))
+      << joined(problems);
+  EXPECT_FALSE(mentions(problems, "section")) << "kNoPage asks for no page" << joined(problems);
+}
+
+// The next/ mechanism: a listed next/ file joins the files every consumer replays; today none is.
+TEST(RouteTable, ReplayedReferenceFilesAreTheDirectoryAndTheListedNextFiles) {
+  const auto today =
+      test_support::replayed_reference_files(CUTCALC_REFERENCE_DIR, api::calculation_routes());
+  EXPECT_TRUE(std::none_of(today.begin(), today.end(),
+                           [](const std::string& file) { return file.starts_with("next/"); }));
+  EXPECT_TRUE(std::find(today.begin(), today.end(), "main-time.json") != today.end());
+
+  const std::array listed = {
+      api::CalculationRoute{.path = "/v1/main-time",
+                            .handler = nullptr,
+                            .reference_files = {"main-time.json", "next/main-time.json"}}};
+  const auto with_next = test_support::replayed_reference_files(CUTCALC_REFERENCE_DIR, listed);
+  EXPECT_EQ(with_next.size(), today.size() + 1);
+  EXPECT_TRUE(std::find(with_next.begin(), with_next.end(), "next/main-time.json") !=
+              with_next.end());
+  // ... and a listed next/ file passes the table check once it exists and names the endpoint.
+  const auto problems = test_support::route_table_problems(project_inputs(listed));
+  EXPECT_FALSE(mentions(problems, "next/main-time.json")) << joined(problems);
+}
+
+TEST(RouteTable, PrintedAsJsonWithEveryField) {
+  const json rows = api::calculation_routes_json();
+  ASSERT_EQ(rows.size(), api::calculation_routes().size());
+  const json& polygon = *std::find_if(rows.begin(), rows.end(), [](const json& row) {
+    return row["path"] == "/v1/polygon-hole/gcode";
+  });
+  EXPECT_EQ(polygon["slug"], "polygon_hole_gcode");
+  EXPECT_EQ(polygon["forms"], json({"json", "plain_text"}));
+  EXPECT_EQ(polygon["plot_field"]["name"], "include_geometry");
+  EXPECT_EQ(polygon["plot_field"]["example"], true);
+  EXPECT_EQ(polygon["reference_files"], json({"polygon-hole.json"}));
+  EXPECT_EQ(polygon["next_reference_files"], json::array());
+  EXPECT_EQ(polygon["page_section"], "polygon");
+  const json& main_time = rows[1];
+  EXPECT_EQ(main_time["plot_field"], nullptr);
+  EXPECT_EQ(main_time["forms"], json({"json"}));
+}
+
+}  // namespace
+}  // namespace cutcalc
