@@ -194,6 +194,7 @@ TEST(MainTimeProgram, ExtraPathIsAFieldErrorListedWithTheOthers) {
   ASSERT_EQ(only.json.at("errors").size(), 1U) << only.body;
   EXPECT_EQ(only.json.at("errors")[0].at("pointer"), "/extra_path_mm");
   EXPECT_EQ(only.json.at("errors")[0].at("code"), "program_needs_straight_path");
+  EXPECT_EQ(only.json.at("detail"), "extra_path_mm must be 0 (a program needs a straight path)");
   for (const auto& violation : test_support::project_contract().check_response(
            "post", kPath, reply.status, reply.content_type, reply.json)) {
     ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
