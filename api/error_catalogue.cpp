@@ -2,180 +2,168 @@
 
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 namespace cutcalc::api {
 namespace {
 
+// The names and the errors[] flag, from the one list.
+constexpr std::string_view kNames[] = {
+#define CUTCALC_API_ERROR(name, listed) #name,
+#include "api/error_codes.def"
+#undef CUTCALC_API_ERROR
+};
+constexpr bool kListed[] = {
+#define CUTCALC_API_ERROR(name, listed) listed,
+#include "api/error_codes.def"
+#undef CUTCALC_API_ERROR
+};
+
+// A code's sentences. The name and the errors[] flag come from the list (api/error_codes.def).
 struct Entry {
   ErrorCode code;
-  std::string_view name;
-  bool in_errors_list;
   std::string_view en;
   std::string_view ru;
 };
 
-// One row per code, in the enum's order (checked by the test of this catalogue). {interval} is
-// written from the parameters minimum/exclusive_minimum/maximum/exclusive_maximum.
+// One row per code, in the enum's order (checked at compile time below). {interval} is written
+// from the parameters minimum/exclusive_minimum/maximum/exclusive_maximum.
 constexpr std::array kCatalogue{
-    Entry{ErrorCode::required, "required", true, "is required", "обязательное поле"},
-    Entry{ErrorCode::required_choice, "required_choice", true, "is required (one of: {allowed})",
-          "обязательное поле (одно из: {allowed})"},
-    Entry{ErrorCode::not_a_number, "not_a_number", true, "must be a number", "должно быть числом"},
-    Entry{ErrorCode::not_finite, "not_finite", true, "must be a finite number",
-          "должно быть конечным числом"},
-    Entry{ErrorCode::not_an_integer, "not_an_integer", true, "must be an integer",
-          "должно быть целым числом"},
-    Entry{ErrorCode::must_be_positive, "must_be_positive", true, "must be > 0", "должно быть > 0"},
-    Entry{ErrorCode::must_not_be_negative, "must_not_be_negative", true, "must be >= 0",
-          "должно быть >= 0"},
-    Entry{ErrorCode::below_resolution, "below_resolution", true,
-          "must be >= {minimum} (smaller values are below any machine's resolution)",
-          "должно быть >= {minimum} (меньшие значения ниже разрешения любого станка)"},
-    Entry{ErrorCode::out_of_range, "out_of_range", true, "must be in {interval}",
-          "должно лежать в интервале {interval}"},
-    Entry{ErrorCode::wrong_list_length, "wrong_list_length", true,
-          "must be a list of {min_items} to {max_items} numbers",
-          "должно быть списком из {min_items}–{max_items} чисел"},
-    Entry{ErrorCode::not_a_boolean, "not_a_boolean", true, "must be true or false",
-          "должно быть true или false"},
-    Entry{ErrorCode::not_a_string, "not_a_string", true, "must be a string", "должно быть строкой"},
-    Entry{ErrorCode::not_an_object, "not_an_object", true, "must be an object",
-          "должно быть объектом"},
-    Entry{ErrorCode::not_one_of, "not_one_of", true, "must be one of: {allowed}",
-          "должно быть одним из: {allowed}"},
-    Entry{ErrorCode::unknown_field, "unknown_field", true, "is not a known field",
-          "неизвестное поле"},
-    Entry{ErrorCode::body_not_an_object, "body_not_an_object", true,
-          "the request body must be a JSON object", "тело запроса должно быть объектом JSON"},
-    Entry{ErrorCode::exactly_one_field, "exactly_one_field", true, "give exactly one of {fields}",
-          "укажите ровно одно из полей: {fields}"},
-    Entry{ErrorCode::exclusive_fields, "exclusive_fields", true, "give at most one of {fields}",
-          "укажите не более одного из полей: {fields}"},
-    Entry{ErrorCode::requires_field, "requires_field", true, "is only used together with {field}",
-          "используется только вместе с {field}"},
-    Entry{ErrorCode::not_above, "not_above", true, "must not be above {field}",
-          "не должно превышать {field}"},
-    Entry{ErrorCode::dialect_only, "dialect_only", true, "is for dialect {dialect} only",
-          "допускается только в диалекте {dialect}"},
-    Entry{ErrorCode::pass_program_only, "pass_program_only", true,
-          "is for the pass program (POST /v1/main-time/program) only",
-          "допускается только в программе проходов (POST /v1/main-time/program)"},
-    Entry{ErrorCode::work_offset_unavailable, "work_offset_unavailable", true,
-          "is not a work offset of {dialect} (use one of: {allowed})",
-          "не является рабочим смещением {dialect} (допустимы: {allowed})"},
-    Entry{ErrorCode::invalid_program_name, "invalid_program_name", true,
-          "must be 1 to 24 of A-Z, 0-9 and _, starting with a letter",
-          "должно состоять из 1–24 символов A-Z, 0-9 и _ и начинаться с буквы"},
-    Entry{ErrorCode::reserved_program_name, "reserved_program_name", true,
-          "must not be a reserved device name ({name})",
-          "не должно быть зарезервированным именем устройства ({name})"},
-    Entry{ErrorCode::program_name_two_letters, "program_name_two_letters", true,
-          "must start with two letters (sinumerik)", "должно начинаться с двух букв (sinumerik)"},
-    Entry{ErrorCode::program_name_reserved_prefix, "program_name_reserved_prefix", true,
-          "must not start with {prefix} (reserved by sinumerik)",
-          "не должно начинаться с {prefix} (зарезервировано в sinumerik)"},
-    Entry{ErrorCode::no_contact, "no_contact", true,
-          "the tool does not reach the workpiece: there is no contact",
+    Entry{ErrorCode::no_contact, "the tool does not reach the workpiece: there is no contact",
           "инструмент не касается заготовки: контакта нет"},
-    Entry{ErrorCode::stroke_shorter_than_entry, "stroke_shorter_than_entry", true,
+    Entry{ErrorCode::stroke_shorter_than_entry,
           "length_mm is too short: the stroke ends before the cutter is fully engaged",
           "length_mm слишком мала: ход заканчивается раньше, чем фреза полностью врежется"},
-    Entry{ErrorCode::entry_arc_wider_than_diameter, "entry_arc_wider_than_diameter", true,
+    Entry{ErrorCode::entry_arc_wider_than_diameter,
           "the entry arc is wider than its diameter: width_mm > 2 radius_mm",
           "дуга входа шире своего диаметра: width_mm > 2 radius_mm"},
-    Entry{ErrorCode::exit_arc_wider_than_diameter, "exit_arc_wider_than_diameter", true,
+    Entry{ErrorCode::exit_arc_wider_than_diameter,
           "the exit arc is wider than its diameter: width_mm > 2 radius_mm",
           "дуга выхода шире своего диаметра: width_mm > 2 radius_mm"},
-    Entry{ErrorCode::exit_width_mismatch, "exit_width_mismatch", true,
+    Entry{ErrorCode::exit_width_mismatch,
           "the exit contour must have the same width as the entry contour",
           "контур выхода должен иметь ту же ширину, что и контур входа"},
-    Entry{ErrorCode::offset_with_several_passes, "offset_with_several_passes", true,
+    Entry{ErrorCode::offset_with_several_passes,
           "a non-zero offset_mm applies only to a single lateral pass",
           "ненулевое offset_mm допускается только при одном поперечном проходе"},
-    Entry{ErrorCode::allowance_wider_than_part, "allowance_wider_than_part", true,
+    Entry{ErrorCode::allowance_wider_than_part,
           "the allowance width must not exceed the part width",
           "ширина припуска не должна превышать ширину детали"},
-    Entry{ErrorCode::allowance_not_full_width, "allowance_not_full_width", true,
+    Entry{ErrorCode::allowance_not_full_width,
           "with several lateral passes the allowance width must equal the part width",
           "при нескольких поперечных проходах ширина припуска должна равняться ширине детали"},
-    Entry{ErrorCode::width_of_cut_exceeds_diameter, "width_of_cut_exceeds_diameter", true,
+    Entry{ErrorCode::width_of_cut_exceeds_diameter,
           "the width of cut must not exceed the cutter diameter",
           "ширина фрезерования не должна превышать диаметр фрезы"},
-    Entry{ErrorCode::entry_feed_exceeds_feed, "entry_feed_exceeds_feed", true,
+    Entry{ErrorCode::entry_feed_exceeds_feed,
           "the entry feed per tooth must not exceed the feed per tooth",
           "подача на зуб при врезании не должна превышать подачу на зуб"},
-    Entry{ErrorCode::too_many_lateral_passes, "too_many_lateral_passes", true,
+    Entry{ErrorCode::too_many_lateral_passes,
           "too many lateral passes: at most {maximum} are computed",
           "слишком много поперечных проходов: рассчитывается не более {maximum}"},
-    Entry{ErrorCode::too_many_depth_passes, "too_many_depth_passes", true,
-          "too many depth passes: at most {maximum} are computed",
+    Entry{ErrorCode::too_many_depth_passes, "too many depth passes: at most {maximum} are computed",
           "слишком много проходов по глубине: рассчитывается не более {maximum}"},
-    Entry{ErrorCode::contact_angle_outside_arc, "contact_angle_outside_arc", true,
+    Entry{ErrorCode::contact_angle_outside_arc,
           "the contact angle is outside the engagement arc |rho| <= rho_e",
           "угол контакта вне дуги контакта |rho| <= rho_e"},
-    Entry{ErrorCode::target_needs_minor_edge_angle, "target_needs_minor_edge_angle", true,
+    Entry{ErrorCode::target_needs_minor_edge_angle,
           "the target crest height needs a larger minor edge angle (at 0 degrees the crest height "
           "is 0 at every feed)",
           "для заданной высоты неровностей нужен больший вспомогательный угол в плане (при 0° "
           "высота неровностей равна 0 при любой подаче)"},
-    Entry{ErrorCode::cutter_not_smaller_than_bore, "cutter_not_smaller_than_bore", true,
+    Entry{ErrorCode::cutter_not_smaller_than_bore,
           "the cutter radius must be smaller than the bore radius",
           "радиус фрезы должен быть меньше радиуса отверстия"},
-    Entry{ErrorCode::bore_feed_too_large, "bore_feed_too_large", true,
+    Entry{ErrorCode::bore_feed_too_large,
           "the feed is too large for this cutter and bore: the centre would orbit the bore at "
           "least once per revolution, or successive tooth paths would form no cusp",
           "подача слишком велика для этой фрезы и отверстия: центр фрезы обходил бы отверстие за "
           "один оборот или быстрее, либо следы соседних зубьев не образовали бы гребня"},
-    Entry{ErrorCode::tolerance_unreachable, "tolerance_unreachable", true,
+    Entry{ErrorCode::tolerance_unreachable,
           "the arc fit needs more than {maximum} biarcs per ellipse arc for this tolerance and "
           "diameter",
           "при этих допуске и диаметре аппроксимация требует более {maximum} биарок на дугу "
           "эллипса"},
-    Entry{ErrorCode::program_too_large, "program_too_large", true,
+    Entry{ErrorCode::program_too_large,
           "the program would have more than {maximum} arc blocks: use a larger step_down_mm, "
           "fewer loops_per_layer or a larger tolerance_mm",
           "программа содержала бы более {maximum} кадров с дугами: увеличьте step_down_mm или "
           "tolerance_mm либо уменьшите loops_per_layer"},
-    Entry{ErrorCode::pass_program_too_large, "pass_program_too_large", true,
-          "the program would have more than {maximum} blocks",
+    Entry{ErrorCode::pass_program_too_large, "the program would have more than {maximum} blocks",
           "программа содержала бы более {maximum} кадров"},
-    Entry{ErrorCode::program_needs_straight_path, "program_needs_straight_path", true,
-          "a program needs a straight path: extra_path_mm must be 0",
-          "программе нужен прямолинейный путь: extra_path_mm должно быть 0"},
-    Entry{ErrorCode::word_prints_as_zero, "word_prints_as_zero", true,
+    Entry{ErrorCode::word_prints_as_zero,
           "a feed or the spindle speed is too small to print with this many decimals",
           "подача или частота вращения слишком малы для вывода с таким числом знаков"},
-    Entry{ErrorCode::empty_body, "empty_body", false,
-          "the request body is empty; send a JSON object",
+    Entry{ErrorCode::required, "is required", "обязательное поле"},
+    Entry{ErrorCode::required_choice, "is required (one of: {allowed})",
+          "обязательное поле (одно из: {allowed})"},
+    Entry{ErrorCode::not_a_number, "must be a number", "должно быть числом"},
+    Entry{ErrorCode::not_finite, "must be a finite number", "должно быть конечным числом"},
+    Entry{ErrorCode::not_an_integer, "must be an integer", "должно быть целым числом"},
+    Entry{ErrorCode::must_be_positive, "must be > 0", "должно быть > 0"},
+    Entry{ErrorCode::must_not_be_negative, "must be >= 0", "должно быть >= 0"},
+    Entry{ErrorCode::below_resolution,
+          "must be >= {minimum} (smaller values are below any machine's resolution)",
+          "должно быть >= {minimum} (меньшие значения ниже разрешения любого станка)"},
+    Entry{ErrorCode::out_of_range, "must be in {interval}", "должно лежать в интервале {interval}"},
+    Entry{ErrorCode::wrong_list_length, "must be a list of {min_items} to {max_items} numbers",
+          "должно быть списком из {min_items}–{max_items} чисел"},
+    Entry{ErrorCode::not_a_boolean, "must be true or false", "должно быть true или false"},
+    Entry{ErrorCode::not_a_string, "must be a string", "должно быть строкой"},
+    Entry{ErrorCode::not_an_object, "must be an object", "должно быть объектом"},
+    Entry{ErrorCode::not_one_of, "must be one of: {allowed}", "должно быть одним из: {allowed}"},
+    Entry{ErrorCode::unknown_field, "is not a known field", "неизвестное поле"},
+    Entry{ErrorCode::body_not_an_object, "the request body must be a JSON object",
+          "тело запроса должно быть объектом JSON"},
+    Entry{ErrorCode::exactly_one_field, "give exactly one of {fields}",
+          "укажите ровно одно из полей: {fields}"},
+    Entry{ErrorCode::exclusive_fields, "give at most one of {fields}",
+          "укажите не более одного из полей: {fields}"},
+    Entry{ErrorCode::requires_field, "is only used together with {field}",
+          "используется только вместе с {field}"},
+    Entry{ErrorCode::not_above, "must not be above {field}", "не должно превышать {field}"},
+    Entry{ErrorCode::dialect_only, "is for dialect {dialect} only",
+          "допускается только в диалекте {dialect}"},
+    Entry{ErrorCode::pass_program_only, "is for the pass program (POST /v1/main-time/program) only",
+          "допускается только в программе проходов (POST /v1/main-time/program)"},
+    Entry{ErrorCode::work_offset_unavailable,
+          "is not a work offset of {dialect} (use one of: {allowed})",
+          "не является рабочим смещением {dialect} (допустимы: {allowed})"},
+    Entry{ErrorCode::invalid_program_name,
+          "must be 1 to 24 of A-Z, 0-9 and _, starting with a letter",
+          "должно состоять из 1–24 символов A-Z, 0-9 и _ и начинаться с буквы"},
+    Entry{ErrorCode::reserved_program_name, "must not be a reserved device name ({name})",
+          "не должно быть зарезервированным именем устройства ({name})"},
+    Entry{ErrorCode::program_name_two_letters, "must start with two letters (sinumerik)",
+          "должно начинаться с двух букв (sinumerik)"},
+    Entry{ErrorCode::program_name_reserved_prefix,
+          "must not start with {prefix} (reserved by sinumerik)",
+          "не должно начинаться с {prefix} (зарезервировано в sinumerik)"},
+    Entry{ErrorCode::program_needs_straight_path, "must be 0 (a program needs a straight path)",
+          "должно быть 0 (программе нужен прямолинейный путь)"},
+    Entry{ErrorCode::empty_body, "the request body is empty; send a JSON object",
           "тело запроса пустое; отправьте объект JSON"},
-    Entry{ErrorCode::duplicate_key, "duplicate_key", false, "duplicate key \"{key}\" in an object",
+    Entry{ErrorCode::duplicate_key, "duplicate key \"{key}\" in an object",
           "повторяющийся ключ \"{key}\" в объекте"},
-    Entry{ErrorCode::too_deeply_nested, "too_deeply_nested", false,
-          "JSON nested deeper than {levels} levels", "JSON вложен глубже {levels} уровней"},
-    Entry{ErrorCode::invalid_json, "invalid_json", false,
-          "the request body is not valid JSON: {reason}",
+    Entry{ErrorCode::too_deeply_nested, "JSON nested deeper than {levels} levels",
+          "JSON вложен глубже {levels} уровней"},
+    Entry{ErrorCode::invalid_json, "the request body is not valid JSON: {reason}",
           "тело запроса не является корректным JSON: {reason}"},
-    Entry{ErrorCode::unsupported_media_type, "unsupported_media_type", false,
+    Entry{ErrorCode::unsupported_media_type,
           "send the request body as application/json (got \"{content_type}\")",
           "отправьте тело запроса как application/json (получено \"{content_type}\")"},
-    Entry{ErrorCode::no_such_resource, "no_such_resource", false, "no such resource: {path}",
-          "нет такого ресурса: {path}"},
-    Entry{ErrorCode::method_not_allowed, "method_not_allowed", false,
-          "{method} is not allowed on {path}; allowed: {allow}",
+    Entry{ErrorCode::no_such_resource, "no such resource: {path}", "нет такого ресурса: {path}"},
+    Entry{ErrorCode::method_not_allowed, "{method} is not allowed on {path}; allowed: {allow}",
           "метод {method} не разрешён для {path}; разрешены: {allow}"},
-    Entry{ErrorCode::body_too_large, "body_too_large", false,
-          "the request body exceeds the size limit", "тело запроса превышает допустимый размер"},
-    Entry{ErrorCode::malformed_http, "malformed_http", false,
-          "the HTTP request could not be processed: {reason}",
+    Entry{ErrorCode::body_too_large, "the request body exceeds the size limit",
+          "тело запроса превышает допустимый размер"},
+    Entry{ErrorCode::malformed_http, "the HTTP request could not be processed: {reason}",
           "HTTP-запрос не удалось обработать: {reason}"},
-    Entry{ErrorCode::shutting_down, "shutting_down", false, "shutting down",
-          "сервис останавливается"},
-    Entry{ErrorCode::connection_limit, "connection_limit", false,
-          "the server is at its connection limit; retry later",
+    Entry{ErrorCode::shutting_down, "shutting down", "сервис останавливается"},
+    Entry{ErrorCode::connection_limit, "the server is at its connection limit; retry later",
           "сервер достиг предела числа соединений; повторите позже"},
-    Entry{ErrorCode::internal_error, "internal_error", false,
-          "an internal error occurred (a bug in cutcalc); it was logged",
+    Entry{ErrorCode::internal_error, "an internal error occurred (a bug in cutcalc); it was logged",
           "внутренняя ошибка (ошибка в cutcalc); она записана в журнал"},
 };
 
@@ -214,6 +202,7 @@ constexpr bool catalogue_in_enum_order() {
   return true;
 }
 static_assert(catalogue_in_enum_order(), "one catalogue row per code, in the enum's order");
+static_assert(kCatalogue.size() == std::size(kNames), "one catalogue row per code of the list");
 
 constexpr std::array<ErrorCode, kCatalogue.size()> all_codes() {
   std::array<ErrorCode, kCatalogue.size()> codes{};
@@ -295,13 +284,9 @@ std::string_view language_tag(Language language) { return language == Language::
 
 std::span<const ErrorCode> all_error_codes() { return kAllCodes; }
 
-std::string_view code_name(ErrorCode code) {
-  return kCatalogue[static_cast<std::size_t>(code)].name;
-}
+std::string_view code_name(ErrorCode code) { return kNames[static_cast<std::size_t>(code)]; }
 
-bool in_errors_list(ErrorCode code) {
-  return kCatalogue[static_cast<std::size_t>(code)].in_errors_list;
-}
+bool in_errors_list(ErrorCode code) { return kListed[static_cast<std::size_t>(code)]; }
 
 std::string render_message(ErrorCode code, const nlohmann::json& params, Language language) {
   const Entry& entry = kCatalogue[static_cast<std::size_t>(code)];

@@ -17,71 +17,12 @@ enum class Language { en, ru };
 // The Content-Language tag of a language: "en", "ru".
 std::string_view language_tag(Language language);
 
+// Every code the API sends, from the one list (api/error_codes.def): the domain's codes first, each
+// the same number as its domain::ErrorCode, then the API's own.
 enum class ErrorCode {
-  // A field's own rules (api/field_reader.h).
-  required,              // absent
-  required_choice,       // absent; {allowed}
-  not_a_number,          // not a JSON number
-  not_finite,            // NaN, infinity or beyond a double
-  not_an_integer,        // 2.5 where a whole number is needed
-  must_be_positive,      // <= 0; {exclusive_minimum, maximum}
-  must_not_be_negative,  // < 0; {minimum, maximum}
-  below_resolution,      // in (0, minimum); {minimum}
-  out_of_range,          // {minimum | exclusive_minimum, maximum | exclusive_maximum}
-  wrong_list_length,     // not a list of min_items..max_items; {min_items, max_items}
-  not_a_boolean,         // not true/false
-  not_a_string,          // not a JSON string
-  not_an_object,         // not a JSON object
-  not_one_of,            // a string outside the choices; {allowed}
-  unknown_field,         // a key the endpoint does not know
-  body_not_an_object,    // the request body is JSON but not an object
-  // Rules between fields that the API layer checks.
-  exactly_one_field,             // {fields}
-  exclusive_fields,              // {fields}: at most one
-  requires_field,                // only with another field; {field}
-  not_above,                     // must not exceed another field; {field}
-  dialect_only,                  // a program field of one control only; {dialect}
-  pass_program_only,             // a program field of the pass program only
-  work_offset_unavailable,       // G58/G59 on sinumerik; {dialect, allowed}
-  invalid_program_name,          // not 1-24 of A-Z, 0-9, _ from a letter
-  reserved_program_name,         // a device name; {name}
-  program_name_two_letters,      // sinumerik
-  program_name_reserved_prefix,  // sinumerik; {prefix}
-  // Valid fields that the model cannot answer together (domain::ErrorCode, one to one).
-  no_contact,
-  stroke_shorter_than_entry,
-  entry_arc_wider_than_diameter,
-  exit_arc_wider_than_diameter,
-  exit_width_mismatch,
-  offset_with_several_passes,
-  allowance_wider_than_part,
-  allowance_not_full_width,
-  width_of_cut_exceeds_diameter,
-  entry_feed_exceeds_feed,
-  too_many_lateral_passes,
-  too_many_depth_passes,
-  contact_angle_outside_arc,
-  target_needs_minor_edge_angle,
-  cutter_not_smaller_than_bore,
-  bore_feed_too_large,
-  tolerance_unreachable,
-  program_too_large,
-  pass_program_too_large,
-  program_needs_straight_path,
-  word_prints_as_zero,
-  // A problem's detail when it has no field errors (never in errors[]).
-  empty_body,
-  duplicate_key,           // {key}
-  too_deeply_nested,       // {levels}
-  invalid_json,            // {reason}: the JSON library's own words
-  unsupported_media_type,  // {content_type}
-  no_such_resource,        // {path}
-  method_not_allowed,      // {method, path, allow}
-  body_too_large,
-  malformed_http,  // {reason}: the framing's own words
-  shutting_down,
-  connection_limit,
-  internal_error,
+#define CUTCALC_API_ERROR(name, listed) name,
+#include "api/error_codes.def"
+#undef CUTCALC_API_ERROR
 };
 
 // Every code, in declaration order: openapi.yaml's enum must list exactly those that can appear in

@@ -2,6 +2,7 @@
 
 #include "api/domain_error_mapping.h"
 #include "api/entry/contour_reader.h"
+#include "api/entry/entry_error_pointers.h"
 #include "api/entry/entry_json.h"
 #include "api/field_reader.h"
 #include "domain/entry/entry_length.h"
@@ -59,14 +60,14 @@ HandlerOutcome handle_entry_length(const nlohmann::json& body) {
   }
   const auto result = domain::entry::compute_entry_length(request.params);
   if (!result.ok()) {
-    return to_problem(result.error());
+    return to_problem(result.error(), kEntryErrorPointers);
   }
   if (!request.include_scheme) {
     return entry_length_answer(result.value(), nullptr);
   }
   const auto scheme = domain::entry::entry_scheme(request.params, result.value());
   if (!scheme.ok()) {
-    return to_problem(scheme.error());
+    return to_problem(scheme.error(), kEntryErrorPointers);
   }
   const nlohmann::json scheme_json = to_json(scheme.value());
   return entry_length_answer(result.value(), &scheme_json);

@@ -1,6 +1,7 @@
 #include "api/entry/main_time_endpoint.h"
 
 #include "api/domain_error_mapping.h"
+#include "api/entry/entry_error_pointers.h"
 #include "api/entry/entry_json.h"
 #include "api/entry/main_time_request.h"
 #include "api/program/program_reader.h"
@@ -22,7 +23,7 @@ HandlerOutcome handle_main_time(const nlohmann::json& body) {
   const auto& [params, limits, unused] = std::get<MainTimeRequest>(request);
   const auto result = domain::entry::compute_main_time(params);
   if (!result.ok()) {
-    return to_problem(result.error());
+    return to_problem(result.error(), kEntryErrorPointers);
   }
   return main_time_json(result.value(), limits);
 }

@@ -1,6 +1,7 @@
 #include "api/entry/main_time_program_endpoint.h"
 
 #include "api/domain_error_mapping.h"
+#include "api/entry/entry_error_pointers.h"
 #include "api/entry/main_time_endpoint.h"
 #include "api/entry/main_time_request.h"
 #include "api/program/program_reader.h"
@@ -15,11 +16,11 @@ HandlerOutcome handle_main_time_program(const nlohmann::json& body) {
   const auto& [params, limits, options] = std::get<MainTimeRequest>(request);
   const auto main_time = domain::entry::compute_main_time(params);
   if (!main_time.ok()) {
-    return to_problem(main_time.error());
+    return to_problem(main_time.error(), kEntryErrorPointers);
   }
   const auto written = model::write_pass_program(params, main_time.value(), options, limits);
   if (!written.ok()) {
-    return to_problem(written.error());
+    return to_problem(written.error(), kEntryErrorPointers);
   }
   const model::PassProgram& program = written.value();
   nlohmann::json json = {{"program", program.program},

@@ -22,7 +22,7 @@ domain::entry::Allowance read_allowance(ObjectReader& in) {
   return out;
 }
 
-MainTimeParams read_params(ObjectReader& in) {
+MainTimeParams read_params(ObjectReader& in, bool with_program) {
   MainTimeParams params;
   params.cutter_diameter_mm =
       in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
@@ -51,6 +51,11 @@ MainTimeParams read_params(ObjectReader& in) {
   params.length_mm = in.required_number("length_mm", Bounds::positive()).value_or(0.0);
   params.extra_path_mm =
       in.number_or("extra_path_mm", Bounds::non_negative(), params.extra_path_mm);
+  // programs.md 1.2: each pass of a program is one straight line (L1 = 0), a field rule like any
+  // other, so it is listed with every other field error.
+  if (with_program && params.extra_path_mm > 0.0) {
+    in.add_error("extra_path_mm", ErrorCode::program_needs_straight_path);
+  }
   params.approach_mm = in.number_or("approach_mm", Bounds::non_negative(), params.approach_mm);
   params.overrun_mm = in.number_or("overrun_mm", Bounds::non_negative(), params.overrun_mm);
   ObjectReader entry = in.object("entry", true);
@@ -84,7 +89,7 @@ std::variant<MainTimeRequest, Problem> read_main_time_request(const nlohmann::js
   std::vector<FieldError> errors;
   ObjectReader in = root_reader(body, errors);
   MainTimeRequest request;
-  request.params = read_params(in);
+  request.params = read_params(in, with_program);
   if (with_program) {
     request.program = program::read_program_options(in, program::ProgramKind::pass_program);
   }

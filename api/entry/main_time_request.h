@@ -17,8 +17,8 @@ struct MainTimeRequest {
   domain::program::ProgramOptions program;  // `program` (defaults unless with_program)
 };
 
-// Every field error (with `program` only when `with_program`), then the alternatives; a problem
-// when anything is wrong.
+// Every field error (with `program`, and extra_path_mm 0, only when `with_program`), then the
+// alternatives; a problem when anything is wrong.
 std::variant<MainTimeRequest, Problem> read_main_time_request(const nlohmann::json& body,
                                                               bool with_program);
 

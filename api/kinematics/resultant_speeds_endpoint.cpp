@@ -12,6 +12,11 @@ namespace {
 
 namespace model = domain::kinematics;
 
+// no_contact is about the combination of the radii and the placement.
+constexpr ErrorPointer kErrorPointers[] = {
+    {domain::ErrorCode::contact_angle_outside_arc, "/contact_angles_deg"},  // + the element's index
+};
+
 constexpr std::size_t kMaxContactAngles = 1000;
 // arc_samples: both ends of the arc at least; 361 = one sample per degree of a half-circle arc.
 constexpr std::int64_t kMinArcSamples = 2;
@@ -85,7 +90,7 @@ HandlerOutcome handle_resultant_speeds(const nlohmann::json& body) {
   }
   const auto result = model::compute_resultant_speeds(params);
   if (!result.ok()) {
-    return to_problem(result.error());
+    return to_problem(result.error(), kErrorPointers);
   }
   nlohmann::json points = nlohmann::json::array();
   for (const auto& point : result.value().points) {

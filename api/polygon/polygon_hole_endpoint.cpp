@@ -14,6 +14,11 @@ namespace {
 
 namespace model = domain::polygon;
 
+constexpr ErrorPointer kErrorPointers[] = {
+    {domain::ErrorCode::tolerance_unreachable, "/tolerance_mm"},
+    {domain::ErrorCode::program_too_large, "/step_down_mm"},
+};
+
 // Spec section 10: d below 1 mm is beyond the program's 0.1 um resolution; a tolerance below
 // 0.1 um likewise; above 0.1 mm the fit is no longer a finishing path.
 const Bounds kDiameter{1.0, true, kMaxLengthMm, true, {}};
@@ -71,10 +76,6 @@ PolygonHoleRequest read_request(const nlohmann::json& body, ObjectReader& in,
 }
 
 nlohmann::json to_json(const model::PolygonHoleResult& result) {
-  nlohmann::json warnings = nlohmann::json::array();
-  for (const auto& warning : result.warnings) {
-    warnings.push_back({{"code", warning.code}, {"detail", warning.detail}});
-  }
   return {{"program", result.program},
           {"blocks_per_loop", result.blocks_per_loop},
           {"loop_length_mm", result.loop_length_mm},
@@ -85,7 +86,7 @@ nlohmann::json to_json(const model::PolygonHoleResult& result) {
           {"uncut_corner_area_mm2", result.uncut_corner_area_mm2},
           {"corner_gap_mm", result.corner_gap_mm},
           {"max_feed_by_block_rate_mm_per_min", result.max_feed_by_block_rate_mm_per_min},
-          {"warnings", std::move(warnings)},
+          {"warnings", program::to_json(result.warnings)},
           {"file_name", result.file_name}};
 }
 
@@ -128,7 +129,7 @@ HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
   }
   const auto result = model::generate_polygon_hole(request.params);
   if (!result.ok()) {
-    return to_problem(result.error());
+    return to_problem(result.error(), kErrorPointers);
   }
   nlohmann::json json = to_json(result.value());
   const domain::program::ProgramOptions options =
@@ -143,7 +144,7 @@ HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
     const auto geometry =
         model::sample_hole_geometry({request.params.faces, request.params.inscribed_diameter_mm});
     if (!geometry.ok()) {
-      return to_problem(geometry.error());
+      return to_problem(geometry.error(), kErrorPointers);
     }
     json["geometry"] = to_json(geometry.value());
   }

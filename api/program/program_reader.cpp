@@ -137,7 +137,7 @@ model::MachineLimits read_machine_limits(ObjectReader& root) {
 nlohmann::json to_json(const std::vector<model::Warning>& warnings) {
   nlohmann::json list = nlohmann::json::array();
   for (const auto& warning : warnings) {
-    list.push_back({{"code", warning.code}, {"detail", warning.detail}});
+    list.push_back({{"code", model::warning_name(warning.code)}, {"detail", warning.detail}});
   }
   return list;
 }

@@ -23,7 +23,7 @@ domain::program::ProgramOptions read_program_options(ObjectReader& root, Program
 // The `machine` object of `root` (absent: no limits).
 domain::program::MachineLimits read_machine_limits(ObjectReader& root);
 
-// [{code, detail}, ...]
+// [{code, detail}, ...] of either program, the code by its name.
 nlohmann::json to_json(const std::vector<domain::program::Warning>& warnings);
 
 }  // namespace cutcalc::api::program

@@ -6,6 +6,14 @@
 #include "domain/roughness/bore_milling.h"
 
 namespace cutcalc::api::roughness {
+namespace {
+
+// bore_feed_too_large is about the combination of the feed, teeth, radii and sense.
+constexpr ErrorPointer kErrorPointers[] = {
+    {domain::ErrorCode::cutter_not_smaller_than_bore, "/cutter_radius_mm"},
+};
+
+}  // namespace
 
 HandlerOutcome handle_bore_milling(const nlohmann::json& body) {
   std::vector<FieldError> errors;
@@ -23,7 +31,7 @@ HandlerOutcome handle_bore_milling(const nlohmann::json& body) {
   }
   const auto result = domain::roughness::compute_bore_milling_cusp(params);
   if (!result.ok()) {
-    return to_problem(result.error());
+    return to_problem(result.error(), kErrorPointers);
   }
   const auto& cusp = result.value();
   // Member by member: a brace list would build each member through a temporary two-element

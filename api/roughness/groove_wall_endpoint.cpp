@@ -62,7 +62,7 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
   }
   const auto result = model::compute_groove_wall_roughness(params);
   if (!result.ok()) {
-    return to_problem(result.error());
+    return to_problem(result.error(), {});
   }
   // Member by member: a brace list would build each member through a temporary two-element
   // array, a cost paid on every answer of this hot endpoint.
@@ -75,7 +75,7 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
   if (curve_points) {
     const auto curve = model::compute_groove_wall_curve({params, *curve_points});
     if (!curve.ok()) {
-      return to_problem(curve.error());
+      return to_problem(curve.error(), {});
     }
     out["curve"] = to_json(curve.value());
   }

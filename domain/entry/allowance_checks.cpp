@@ -9,8 +9,7 @@ namespace cutcalc::domain::entry::detail {
 std::optional<DomainError> check_width_of_cut(const MainTimeParams& params) {
   // E29 relies on it: a pass wider than the cutter would leave an uncut rib.
   if (params.allowance.width_of_cut_mm > params.cutter_diameter_mm) {
-    return make_error(ErrorCode::width_of_cut_exceeds_diameter,
-                      "the width of cut must not exceed the cutter diameter");
+    return make_error(ErrorCode::width_of_cut_exceeds_diameter);
   }
   return std::nullopt;
 }
@@ -19,8 +18,7 @@ std::optional<DomainError> check_allowance_width(const MainTimeParams& params,
                                                  double part_width_mm) {
   const double H1 = params.allowance.width_mm;  // H1
   if (H1 > part_width_mm && !same_width(H1, part_width_mm)) {
-    return make_error(ErrorCode::allowance_wider_than_part,
-                      "the allowance width must not exceed the part width");
+    return make_error(ErrorCode::allowance_wider_than_part);
   }
   return std::nullopt;
 }
@@ -31,12 +29,10 @@ std::optional<DomainError> check_allowance_width(const MainTimeParams& params,
 std::optional<DomainError> check_several_passes(const MainTimeParams& params,
                                                 double part_width_mm) {
   if (params.offset_mm.value_or(0.0) != 0.0) {
-    return make_error(ErrorCode::offset_with_several_passes,
-                      "a non-zero offset_mm applies only to a single lateral pass");
+    return make_error(ErrorCode::offset_with_several_passes);
   }
   if (!same_width(params.allowance.width_mm, part_width_mm)) {
-    return make_error(ErrorCode::allowance_not_full_width,
-                      "with several lateral passes the allowance width must equal the part width");
+    return make_error(ErrorCode::allowance_not_full_width);
   }
   return std::nullopt;
 }

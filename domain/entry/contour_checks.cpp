@@ -27,20 +27,17 @@ bool same_width(double first_mm, double second_mm) {
 // E3 (B <= 2R)
 std::optional<DomainError> check_arc_widths(const Contour& entry, const Contour* exit) {
   if (arc_wider_than_diameter(entry)) {
-    return make_error(ErrorCode::entry_arc_wider_than_diameter,
-                      "the entry arc is wider than its diameter: width_mm > 2 radius_mm");
+    return make_error(ErrorCode::entry_arc_wider_than_diameter);
   }
   if (exit != nullptr && arc_wider_than_diameter(*exit)) {
-    return make_error(ErrorCode::exit_arc_wider_than_diameter,
-                      "the exit arc is wider than its diameter: width_mm > 2 radius_mm");
+    return make_error(ErrorCode::exit_arc_wider_than_diameter);
   }
   return std::nullopt;
 }
 
 std::optional<DomainError> check_exit_width(const Contour& exit, double part_width) {
   if (!same_width(part_width_mm(exit), part_width)) {
-    return make_error(ErrorCode::exit_width_mismatch,
-                      "the exit contour must have the same width as the entry contour");
+    return make_error(ErrorCode::exit_width_mismatch);
   }
   return std::nullopt;
 }

@@ -33,8 +33,7 @@ Result<Feeds> compute_feeds(const MainTimeParams& params) {
   const double S_z1 = std::get<EntryFeedPerTooth>(params.entry_feed).mm;  // S_z1
   // A faster entry than the steady cut would defeat the reduced entry feed (inferred in the spec).
   if (S_z1 > params.feed_per_tooth_mm) {
-    return make_error(ErrorCode::entry_feed_exceeds_feed,
-                      "the entry feed per tooth must not exceed the feed per tooth");
+    return make_error(ErrorCode::entry_feed_exceeds_feed);
   }
   feeds.entry_feed_mm_per_min = feeds.spindle_speed_rpm * z * S_z1;  // S_m1 (E33)
   return feeds;

@@ -90,13 +90,12 @@ Result<MainTimeResult> compute_main_time(const MainTimeParams& params) {
   const Allowance& allowance = params.allowance;
   const Result<std::size_t> N1 =
       detail::pass_count(allowance.width_mm, allowance.width_of_cut_mm,
-                         ErrorCode::too_many_lateral_passes, "lateral");  // N1 (E24)
+                         ErrorCode::too_many_lateral_passes);  // N1 (E24)
   if (!N1.ok()) {
     return N1.error();
   }
-  const Result<std::size_t> N2 =
-      detail::pass_count(allowance.depth_mm, allowance.depth_of_cut_mm,
-                         ErrorCode::too_many_depth_passes, "depth");  // N2 (E24)
+  const Result<std::size_t> N2 = detail::pass_count(allowance.depth_mm, allowance.depth_of_cut_mm,
+                                                    ErrorCode::too_many_depth_passes);  // N2 (E24)
   if (!N2.ok()) {
     return N2.error();
   }

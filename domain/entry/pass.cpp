@@ -62,8 +62,7 @@ Result<PassGeometry> solve_pass(const PassPlan& plan) {
   // boundary case negative.
   const double steady_travel = exit.length_mm + exit.extra_path_mm + overrun - x_cs - X_k;
   if (steady_travel < 0.0) {
-    return make_error(ErrorCode::stroke_shorter_than_entry,
-                      "length_mm is too short: the stroke ends before the cutter is fully engaged");
+    return make_error(ErrorCode::stroke_shorter_than_entry);
   }
   ExitResult exit_result;
   exit_result.end = Position{X_k, axis_frame_y_mm(exit.side)};  // X_k, Y_k (E8)

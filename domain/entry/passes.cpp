@@ -3,7 +3,6 @@
 #include "domain/entry/passes.h"
 
 #include <cmath>
-#include <string>
 
 namespace cutcalc::domain::entry::detail {
 
@@ -16,13 +15,11 @@ constexpr double kCeilGuard = 1e-9;
 }  // namespace
 
 // E24
-Result<std::size_t> pass_count(double allowance_mm, double cut_mm, ErrorCode too_many,
-                               const char* what) {
+Result<std::size_t> pass_count(double allowance_mm, double cut_mm, ErrorCode too_many) {
   const double count = std::ceil(allowance_mm / cut_mm - kCeilGuard);  // N
   // Written so that a NaN or an infinite quotient also fails before the integer conversion.
   if (!(count <= static_cast<double>(kMaxPassCount))) {
-    return make_error(too_many, std::string("too many ") + what + " passes: at most " +
-                                    std::to_string(kMaxPassCount) + " are computed");
+    return make_limit_error(too_many, static_cast<double>(kMaxPassCount));
   }
   // A quotient below the guard (allowance far thinner than a cut) still needs one pass.
   return count < 1.0 ? std::size_t{1} : static_cast<std::size_t>(count);

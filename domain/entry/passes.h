@@ -9,9 +9,9 @@
 
 namespace cutcalc::domain::entry::detail {
 
-// E24: N = ceil(allowance / cut - 1e-9), at least 1. Error `too_many` above kMaxPassCount.
-Result<std::size_t> pass_count(double allowance_mm, double cut_mm, ErrorCode too_many,
-                               const char* what);
+// E24: N = ceil(allowance / cut - 1e-9), at least 1. Error `too_many` (limit kMaxPassCount) above
+// kMaxPassCount.
+Result<std::size_t> pass_count(double allowance_mm, double cut_mm, ErrorCode too_many);
 
 // E25: N - 1 full cuts, then the remainder allowance - (N - 1) cut.
 std::vector<double> pass_sizes(std::size_t count, double allowance_mm, double cut_mm);

@@ -15,8 +15,7 @@ Result<ResultantSpeedsResult> compute_resultant_speeds(const ResultantSpeedsPara
   const auto arc =
       detail::engagement_arc(params.tool_radius_mm, params.workpiece_radius_mm, params.placement);
   if (!arc) {
-    return make_error(ErrorCode::no_contact,
-                      "the tool circle does not cut the workpiece circle: no engagement arc");
+    return make_error(ErrorCode::no_contact);
   }
   const double rho_e = arc->half_angle_deg;  // rho_e (V3b)
   // Section 3: entry, middle, exit (or arc_samples angles from entry to exit), with the very
@@ -33,8 +32,7 @@ Result<ResultantSpeedsResult> compute_resultant_speeds(const ResultantSpeedsPara
 
   for (std::size_t i = 0; i < angles.size(); ++i) {
     if (!detail::inside_arc(angles[i], rho_e)) {
-      DomainError error = make_error(ErrorCode::contact_angle_outside_arc,
-                                     "contact angle outside the engagement arc |rho| <= rho_e");
+      DomainError error = make_error(ErrorCode::contact_angle_outside_arc);
       error.index = i;
       return error;
     }

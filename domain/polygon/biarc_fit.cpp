@@ -245,9 +245,7 @@ Result<PhaseFit> fit_ellipse_arc(const CentrePath& path, double tolerance, int m
     }
     return fit;
   }
-  return make_error(ErrorCode::tolerance_unreachable,
-                    "the arc fit needs more than " + std::to_string(max_m) +
-                        " biarcs per ellipse arc for this tolerance and diameter");
+  return make_limit_error(ErrorCode::tolerance_unreachable, max_m);
 }
 
 // P21

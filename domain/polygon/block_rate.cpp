@@ -37,21 +37,21 @@ double max_feed_by_block_rate(double shortest_block_mm, double block_time_ms) {
   return 60000.0 * shortest_block_mm / block_time_ms;
 }
 
-std::vector<ProgramWarning> program_warnings(Synchronization synchronization,
-                                             double programmed_feed_mm_per_min,
-                                             double max_feed_mm_per_min) {
+std::vector<program::Warning> program_warnings(Synchronization synchronization,
+                                               double programmed_feed_mm_per_min,
+                                               double max_feed_mm_per_min) {
   // Short details without commas or parentheses: they also become program comment lines.
-  std::vector<ProgramWarning> warnings;
+  std::vector<program::Warning> warnings;
   if (programmed_feed_mm_per_min > max_feed_mm_per_min) {
     std::string detail = "feed " + compact(programmed_feed_mm_per_min) +
                          " mm/min exceeds the block-rate limit " + compact(max_feed_mm_per_min) +
                          " mm/min: the control will starve";
-    warnings.push_back(ProgramWarning{"feed_exceeds_block_rate", std::move(detail)});
+    warnings.push_back({program::WarningCode::feed_exceeds_block_rate, std::move(detail)});
   }
   if (synchronization == Synchronization::feed_per_rev) {
-    warnings.push_back(ProgramWarning{
-        "phase_not_locked",
-        "G95 does not lock the rotor angle to the path: start with corner 0 pointing -Y"});
+    warnings.push_back(
+        {program::WarningCode::phase_not_locked,
+         "G95 does not lock the rotor angle to the path: start with corner 0 pointing -Y"});
   }
   return warnings;
 }

@@ -17,8 +17,8 @@ double max_feed_by_block_rate(double shortest_block_mm, double block_time_ms);
 
 // phase_not_locked (always with feed_per_rev, section 7) and feed_exceeds_block_rate
 // (F_prog = spindle_speed_rpm * feed_per_rev_mm above the P27 limit, section 8).
-std::vector<ProgramWarning> program_warnings(Synchronization synchronization,
-                                             double programmed_feed_mm_per_min,
-                                             double max_feed_mm_per_min);
+std::vector<program::Warning> program_warnings(Synchronization synchronization,
+                                               double programmed_feed_mm_per_min,
+                                               double max_feed_mm_per_min);
 
 }  // namespace cutcalc::domain::polygon::detail

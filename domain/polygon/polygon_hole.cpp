@@ -67,9 +67,7 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   const detail::Layers layers = detail::split_depth(params.depth_mm, params.step_down_mm);
   if (!(detail::program_arc_blocks(layers.n, loops_per_layer, blocks.size()) <=
         kMaxProgramArcBlocks)) {
-    return make_error(ErrorCode::program_too_large,
-                      "the program would have more than 200000 arc blocks: use a larger "
-                      "step_down_mm, fewer loops_per_layer or a larger tolerance_mm");
+    return make_limit_error(ErrorCode::program_too_large, kMaxProgramArcBlocks);
   }
 
   // P23, in the program's units and decimals when a `program` object is given.
@@ -132,24 +130,21 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   const double ramp_ratio = layout.dz_mm / result.loop_length_mm;
   const bool ramp_along_helix = params.synchronization == Synchronization::feed_per_rev &&
                                 options.dialect != program::Dialect::fanuc;
-  std::vector<ProgramWarning> warnings;
-  for (const auto& w : program::limit_warnings(
-           params.spindle_speed_rpm,
-           {flat_feed,
-            ramp_along_helix ? flat_feed * std::sqrt(1.0 + ramp_ratio * ramp_ratio) : flat_feed},
-           params.machine)) {
-    warnings.push_back({w.code, w.detail});
-  }
+  std::vector<program::Warning> warnings = program::limit_warnings(
+      params.spindle_speed_rpm,
+      {flat_feed,
+       ramp_along_helix ? flat_feed * std::sqrt(1.0 + ramp_ratio * ramp_ratio) : flat_feed},
+      params.machine);
   if (options.dialect == program::Dialect::fanuc &&
       params.synchronization == Synchronization::feed_per_rev &&
       std::fabs(std::floor(params.spindle_speed_rpm + 0.5) - params.spindle_speed_rpm) > 1e-9) {
-    warnings.push_back({"spindle_speed_rounded",
+    warnings.push_back({program::WarningCode::spindle_speed_rounded,
                         "a Fanuc S word takes no decimals: the spindle speed is printed rounded "
                         "half up (the feed per revolution is exact)"});
   }
   if (*result.printed_path_deviation_mm > params.tolerance_mm) {
     warnings.push_back(
-        {"rounding_exceeds_tolerance",
+        {program::WarningCode::rounding_exceeds_tolerance,
          "the program as printed deviates " + detail::fmt4(*result.printed_path_deviation_mm) +
              " mm from the exact path, more than tolerance_mm: print more decimals"});
   }
@@ -159,8 +154,8 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   std::vector<std::string> comments =
       detail::program_comments(layout, loop, options.dialect == program::Dialect::fanuc);
   std::vector<std::string> warning_lines;
-  for (const ProgramWarning& warning : result.warnings) {
-    warning_lines.push_back("WARNING " + warning.code + ": " + warning.detail);
+  for (const program::Warning& warning : result.warnings) {
+    warning_lines.push_back(program::comment_text(warning));
   }
   comments.insert(comments.begin() + 1, warning_lines.begin(), warning_lines.end());
   if (params.synchronization == Synchronization::c_axis &&
@@ -192,9 +187,9 @@ std::string program_with_warning_comments(const PolygonHoleResult& result) {
     return program;
   }
   std::string comments;
-  for (const ProgramWarning& warning : result.warnings) {
-    comments +=
-        "(WARNING " + comment_safe(warning.code) + ": " + comment_safe(warning.detail) + ")\n";
+  for (const program::Warning& warning : result.warnings) {
+    // Appended piece by piece: GCC 12's -Wrestrict misfires on "literal" + std::string.
+    comments.append("(").append(comment_safe(program::comment_text(warning))).append(")\n");
   }
   std::string text = program;
   text.insert(comment_end + 1, comments);

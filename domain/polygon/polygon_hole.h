@@ -37,11 +37,6 @@ struct PolygonHoleParams {
   program::MachineLimits machine;  // limits that turn into warnings (programs.md section 5)
 };
 
-struct ProgramWarning {
-  std::string code;    // programs.md section 5 order; feed_exceeds_block_rate, phase_not_locked
-  std::string detail;  // English, for people
-};
-
 struct PolygonHoleResult {
   std::string program;                             // section 5 text, LF line ends
   int blocks_per_loop = 0;                         // P21
@@ -53,7 +48,7 @@ struct PolygonHoleResult {
   double uncut_corner_area_mm2 = 0.0;              // P17, all N corners
   double corner_gap_mm = 0.0;                      // g (P15)
   double max_feed_by_block_rate_mm_per_min = 0.0;  // P27
-  std::vector<ProgramWarning> warnings;
+  std::vector<program::Warning> warnings;          // programs.md section 5 order, then sections 7-8
   std::string file_name;  // polygon-hole-N{N}-d{d with 4 decimals}.ngc, or the dialect's
   // With a `program` object: P20 on the arcs as printed (programs.md section 4), mm; the
   // warnings are then comment lines of the program itself.

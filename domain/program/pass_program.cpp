@@ -71,17 +71,12 @@ std::vector<double> setup_feeds_mm_per_min(const entry::MainTimeResult& main_tim
 Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
                                        const entry::MainTimeResult& main_time,
                                        const ProgramOptions& options, const MachineLimits& limits) {
-  if (params.extra_path_mm > 0.0) {
-    return make_error(ErrorCode::program_needs_straight_path,
-                      "a program needs a straight path: extra_path_mm must be 0");
-  }
   const std::vector<Traverse> passes = traverses(params, main_time);
   const std::size_t levels = main_time.depth_passes_mm.size();
   const double blocks =
       16.0 + 6.0 * static_cast<double>(passes.size()) * static_cast<double>(levels);
   if (blocks > kMaxProgramBlocks) {
-    return make_error(ErrorCode::pass_program_too_large,
-                      "the program would have more than 200000 blocks");
+    return make_limit_error(ErrorCode::pass_program_too_large, kMaxProgramBlocks);
   }
 
   const double n = main_time.spindle_speed_rpm;
@@ -107,7 +102,7 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
   out.warnings = limit_warnings(n, feeds, limits);
   if (options.dialect == Dialect::fanuc && std::fabs(std::floor(n + 0.5) - n) > 1e-9) {
     out.warnings.push_back(
-        {"spindle_speed_rounded",
+        {WarningCode::spindle_speed_rounded,
          "a Fanuc S word takes no decimals: S" + spindle_text(n, options.dialect, decimals) +
              " for n = " + format_fixed(n, 6) + " rpm (feeds and times use the exact n)"});
   }
@@ -118,7 +113,7 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
       std::string("PROGRAM UNITS ") + (options.units == Units::inch ? "INCH" : "MM") +
           ", X ALONG THE FEED FROM THE ENTRY EDGE, Y FROM THE SIDE EDGE, Z0 TOP FACE"};
   for (const Warning& warning : out.warnings) {
-    model.comments.push_back("WARNING " + warning.code + ": " + warning.detail);
+    model.comments.push_back(comment_text(warning));
   }
 
   model.blocks.reserve(static_cast<std::size_t>(blocks));

@@ -27,8 +27,9 @@ struct PassProgram {
   std::vector<Warning> warnings;          // section 5 order
 };
 
-// G1-G11 on a computed main time. Errors: program_needs_straight_path (L1 > 0), word_prints_as_zero
-// (an F or S word), program_too_large (over kMaxProgramBlocks).
+// G1-G11 on a computed main time. Precondition: params.extra_path_mm == 0 (L1 = 0, section 1.2: a
+// program needs one straight path; the API refuses L1 > 0 as a field error). Errors:
+// word_prints_as_zero (an F or S word), pass_program_too_large (over kMaxProgramBlocks; limit).
 Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
                                        const entry::MainTimeResult& main_time,
                                        const ProgramOptions& options, const MachineLimits& limits);

@@ -88,16 +88,17 @@ std::vector<Warning> limit_warnings(double spindle_rpm, const std::vector<double
                                     const MachineLimits& limits) {
   std::vector<Warning> warnings;
   if (limits.max_spindle_rpm && spindle_rpm > *limits.max_spindle_rpm) {
-    warnings.push_back({"spindle_over_limit", "spindle speed " + number_text(spindle_rpm) +
-                                                  " rpm is above the machine's " +
-                                                  number_text(*limits.max_spindle_rpm) + " rpm"});
+    warnings.push_back(
+        {WarningCode::spindle_over_limit, "spindle speed " + number_text(spindle_rpm) +
+                                              " rpm is above the machine's " +
+                                              number_text(*limits.max_spindle_rpm) + " rpm"});
   }
   if (limits.max_feed_mm_per_min && !feeds_mm_per_min.empty()) {
     const double highest = *std::max_element(feeds_mm_per_min.begin(), feeds_mm_per_min.end());
     if (highest > *limits.max_feed_mm_per_min) {
-      warnings.push_back(
-          {"feed_over_limit", "feed " + number_text(highest) + " mm/min is above the machine's " +
-                                  number_text(*limits.max_feed_mm_per_min) + " mm/min"});
+      warnings.push_back({WarningCode::feed_over_limit,
+                          "feed " + number_text(highest) + " mm/min is above the machine's " +
+                              number_text(*limits.max_feed_mm_per_min) + " mm/min"});
     }
   }
   return warnings;

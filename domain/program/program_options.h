@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "domain/program/program_warning.h"
+
 namespace cutcalc::domain::program {
 
 enum class Dialect { linuxcnc, fanuc, sinumerik };
@@ -67,11 +69,6 @@ std::string file_name(const ProgramOptions& options);
 struct MachineLimits {
   std::optional<double> max_spindle_rpm;
   std::optional<double> max_feed_mm_per_min;
-};
-
-struct Warning {
-  std::string code;    // spindle_over_limit, feed_over_limit, spindle_speed_rounded, ...
-  std::string detail;  // English, for people
 };
 
 // Section 5, warnings 1 and 2: n over the spindle limit; any of `feeds_mm_per_min` (exact values)

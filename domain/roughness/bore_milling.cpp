@@ -50,8 +50,7 @@ Result<BoreMillingResult> compute_bore_milling_cusp(const BoreMillingParams& par
 
   // B.4 step 1
   if (!(r < R)) {
-    return make_error(ErrorCode::cutter_not_smaller_than_bore,
-                      "the cutter radius must be smaller than the bore radius");
+    return make_error(ErrorCode::cutter_not_smaller_than_bore);
   }
   const double Rc = R - r;               // Rc (B1)
   const double eps = orbit_rate(S, Rc);  // eps (B1)

@@ -45,9 +45,7 @@ Result<GrooveWallResult> compute_groove_wall_roughness(const GrooveWallParams& p
     // R4 with phi1 = 0: the minor edge is the wall itself, so Rz = 0 for every feed and no target
     // can bound the feed (R.4).
     if (params.target_rz_um) {
-      return make_error(ErrorCode::target_needs_minor_edge_angle,
-                        "a target crest height needs a minor edge angle above 0: with 0 degrees "
-                        "the crest height is 0 at every feed");
+      return make_error(ErrorCode::target_needs_minor_edge_angle);
     }
     return GrooveWallResult{0.0, CrestBranch::nose_arc_and_minor_edge, std::nullopt};
   }

@@ -168,5 +168,38 @@ TEST(MainTimeProgram, RefusesWhatSection6Refuses) {
   expect_problem_at(huge, "");
 }
 
+// extra_path_mm > 0 is a field rule of this endpoint (programs.md 1.2): listed with every other
+// field error, not answered alone after them.
+TEST(MainTimeProgram, ExtraPathIsAFieldErrorListedWithTheOthers) {
+  json request = worked_example();
+  request["extra_path_mm"] = 5;
+  request["program"] = {{"coolant", "fog"}};
+  request["teeth"] = 0;
+  const JsonReply reply = post(kPath, request.dump());
+  ASSERT_EQ(reply.status, 422) << reply.body;
+  EXPECT_EQ(reply.json.at("type"), "urn:cutcalc:problem:invalid-input");
+  std::map<std::string, std::string> code_at;
+  for (const json& error : reply.json.at("errors")) {
+    code_at[error.at("pointer").get<std::string>()] = error.at("code").get<std::string>();
+  }
+  EXPECT_EQ(code_at["/extra_path_mm"], "program_needs_straight_path") << reply.body;
+  EXPECT_EQ(code_at["/program/coolant"], "not_one_of") << reply.body;
+  EXPECT_TRUE(code_at.count("/teeth")) << reply.body;
+  // Alone it is the same field error.
+  json alone = worked_example();
+  alone["extra_path_mm"] = 0.5;
+  const JsonReply only = post(kPath, alone.dump());
+  ASSERT_EQ(only.status, 422) << only.body;
+  EXPECT_EQ(only.json.at("type"), "urn:cutcalc:problem:invalid-input");
+  ASSERT_EQ(only.json.at("errors").size(), 1U) << only.body;
+  EXPECT_EQ(only.json.at("errors")[0].at("pointer"), "/extra_path_mm");
+  EXPECT_EQ(only.json.at("errors")[0].at("code"), "program_needs_straight_path");
+  EXPECT_EQ(only.json.at("detail"), "extra_path_mm must be 0 (a program needs a straight path)");
+  for (const auto& violation : test_support::project_contract().check_response(
+           "post", kPath, reply.status, reply.content_type, reply.json)) {
+    ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
+  }
+}
+
 }  // namespace
 }  // namespace cutcalc::testing

@@ -25,7 +25,7 @@ constexpr double kTol = 1e-9;
 
 template <class R>
 void expect_error(const R& res, ErrorCode code, const char* what) {
-  ASSERT_FALSE(res.ok()) << what << ": expected " << cutcalc::test::error_name(code);
+  ASSERT_FALSE(res.ok()) << what << ": expected " << cutcalc::domain::error_code_name(code);
   EXPECT_EQ(res.error().code, code) << what << ": got " << outcome(res);
 }
 

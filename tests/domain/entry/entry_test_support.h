@@ -73,44 +73,14 @@ inline entry_api::EntryLengthParams entry_exit(double diameter, double offset,
   return p;
 }
 
-inline std::string error_name(cutcalc::domain::ErrorCode code) {
-  using cutcalc::domain::ErrorCode;
-  switch (code) {
-    case ErrorCode::no_contact:
-      return "no_contact";
-    case ErrorCode::stroke_shorter_than_entry:
-      return "stroke_shorter_than_entry";
-    case ErrorCode::entry_arc_wider_than_diameter:
-      return "entry_arc_wider_than_diameter";
-    case ErrorCode::exit_arc_wider_than_diameter:
-      return "exit_arc_wider_than_diameter";
-    case ErrorCode::exit_width_mismatch:
-      return "exit_width_mismatch";
-    case ErrorCode::offset_with_several_passes:
-      return "offset_with_several_passes";
-    case ErrorCode::allowance_wider_than_part:
-      return "allowance_wider_than_part";
-    case ErrorCode::allowance_not_full_width:
-      return "allowance_not_full_width";
-    case ErrorCode::width_of_cut_exceeds_diameter:
-      return "width_of_cut_exceeds_diameter";
-    case ErrorCode::entry_feed_exceeds_feed:
-      return "entry_feed_exceeds_feed";
-    case ErrorCode::not_converged:
-      return "not_converged";
-    default:
-      break;
-  }
-  return "error code " + std::to_string(static_cast<int>(code));
-}
-
 // gtest-friendly description of a result's error state.
 template <class T>
 std::string outcome(const cutcalc::domain::Result<T>& result) {
   if (result.ok()) {
     return "ok";
   }
-  return error_name(result.error().code) + ": " + result.error().detail;
+  return std::string(cutcalc::domain::error_code_name(result.error().code)) + ": " +
+         result.error().detail;
 }
 
 }  // namespace cutcalc::test

@@ -95,7 +95,7 @@ void expect_time_identities(const MainTimeResult& v) {
 
 void expect_error(const MainTimeParams& p, ErrorCode code, const char* what) {
   const auto res = compute_main_time(p);
-  ASSERT_FALSE(res.ok()) << what << ": expected " << cutcalc::test::error_name(code);
+  ASSERT_FALSE(res.ok()) << what << ": expected " << cutcalc::domain::error_code_name(code);
   EXPECT_EQ(res.error().code, code) << what << ": got " << outcome(res);
 }
 

@@ -33,7 +33,7 @@ using cutcalc::test::polygon::Synchronization;
 std::set<std::string> codes(const cutcalc::test::polygon::PolygonHoleResult& result) {
   std::set<std::string> set;
   for (const auto& warning : result.warnings) {
-    set.insert(warning.code);
+    set.emplace(cutcalc::domain::program::warning_name(warning.code));
   }
   return set;
 }

@@ -261,7 +261,6 @@ TEST(GrooveWallMinorEdgeZero, TargetIsRejected) {
   const auto result = compute_groove_wall_roughness(GrooveWallParams{0.1, 0.3, 0.0, 5.0});
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error().code, ErrorCode::target_needs_minor_edge_angle);
-  EXPECT_FALSE(result.error().detail.empty());
   EXPECT_FALSE(result.error().index.has_value());
 }
 
