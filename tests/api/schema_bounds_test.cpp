@@ -41,20 +41,6 @@ bool is_range_error(const json& error) {
   return codes.count(error.value("code", "")) == 1;
 }
 
-// The name of the component schema a (chain of) reference(s) ends in, else `name`.
-std::string schema_name_of(const json& schema_or_ref, std::string name) {
-  const std::string prefix = "#/components/schemas/";
-  const json* schema = &schema_or_ref;
-  while (schema->is_object() && schema->contains("$ref")) {
-    const std::string ref = schema->at("$ref").get<std::string>();
-    if (ref.rfind(prefix, 0) == 0 && ref.find('/', prefix.size()) == std::string::npos) {
-      name = ref.substr(prefix.size());
-    }
-    schema = &openapi_document().at(json::json_pointer(ref.substr(1)));
-  }
-  return name;
-}
-
 struct Site {
   std::string pointer;  // the field in the request
   json bounds;          // keyword -> value, from the property and its resolved schema
@@ -65,41 +51,16 @@ struct Site {
 
 void collect(const json& schema_or_ref, const json& instance, const std::string& pointer,
              const std::string& name, std::vector<Site>& out) {
-  const std::string schema_name = schema_name_of(schema_or_ref, name);
-  const json& schema = resolve_schema(schema_or_ref);
-  if (!schema.is_object()) return;
-  for (const json& part : schema.value("allOf", json::array())) {
-    collect(part, instance, pointer, schema_name, out);
-  }
-  for (const char* choice : {"oneOf", "anyOf"}) {
-    for (const json& branch : schema.value(choice, json::array())) {
-      if (fits_branch(resolve_schema(branch), instance)) {
-        collect(branch, instance, pointer, schema_name, out);
-        break;
+  walk_request_schema(schema_or_ref, instance, pointer, name, [&out](const SchemaProperty& field) {
+    Site site{field.pointer, json::object(), field.resolved.value("type", "") == "integer",
+              field.present, field.origin};
+    for (const json* source : {&field.resolved, &field.property}) {
+      for (const char* keyword : kBoundKeywords) {
+        if (source->contains(keyword)) site.bounds[keyword] = source->at(keyword);
       }
     }
-  }
-  if (instance.is_object() && schema.contains("properties")) {
-    for (const auto& [key, property] : schema.at("properties").items()) {
-      const json& sub = resolve_schema(property);
-      Site site{pointer + "/" + key, json::object(), sub.value("type", "") == "integer",
-                instance.contains(key), schema_name + "." + key};
-      for (const json* source : {&sub, &property}) {
-        for (const char* keyword : kBoundKeywords) {
-          if (source->contains(keyword)) site.bounds[keyword] = source->at(keyword);
-        }
-      }
-      if (!site.bounds.empty()) out.push_back(site);
-      if (instance.contains(key))
-        collect(property, instance.at(key), site.pointer, schema_name, out);
-    }
-  }
-  if (instance.is_array() && schema.contains("items")) {
-    for (std::size_t i = 0; i < instance.size(); ++i) {
-      collect(schema.at("items"), instance.at(i), pointer + "/" + std::to_string(i), schema_name,
-              out);
-    }
-  }
+    if (!site.bounds.empty()) out.push_back(site);
+  });
 }
 
 // `request` with one object read as another branch of its oneOf/anyOf: the branch's constant set,

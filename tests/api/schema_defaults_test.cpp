@@ -34,44 +34,12 @@ struct Insertion {
 
 void collect(const json& schema_or_ref, const json& instance, const std::string& pointer,
              const std::string& name, std::vector<Insertion>& out) {
-  std::string schema_name = name;
-  if (schema_or_ref.is_object() && schema_or_ref.contains("$ref")) {
-    const std::string ref = schema_or_ref.at("$ref").get<std::string>();
-    schema_name = ref.substr(ref.rfind('/') + 1);
-  }
-  const json& schema = resolve_schema(schema_or_ref);
-  if (!schema.is_object()) return;
-  for (const json& part : schema.value("allOf", json::array())) {
-    collect(part, instance, pointer, schema_name, out);
-  }
-  for (const char* choice : {"oneOf", "anyOf"}) {
-    for (const json& branch : schema.value(choice, json::array())) {
-      if (fits_branch(resolve_schema(branch), instance)) {
-        collect(branch, instance, pointer, schema_name, out);
-        break;
-      }
+  walk_request_schema(schema_or_ref, instance, pointer, name, [&out](const SchemaProperty& field) {
+    const json& with_default = field.property.contains("default") ? field.property : field.resolved;
+    if (with_default.contains("default")) {
+      out.push_back({field.pointer, with_default.at("default"), field.origin, field.present});
     }
-  }
-  if (instance.is_object() && schema.contains("properties")) {
-    for (const auto& [key, property] : schema.at("properties").items()) {
-      const json& sub = resolve_schema(property);
-      const std::string child = pointer + "/" + key;
-      const json& with_default = property.contains("default") ? property : sub;
-      if (with_default.contains("default")) {
-        out.push_back(
-            {child, with_default.at("default"), schema_name + "." + key, instance.contains(key)});
-      }
-      if (instance.contains(key)) {
-        collect(property, instance.at(key), child, schema_name, out);
-      }
-    }
-  }
-  if (instance.is_array() && schema.contains("items")) {
-    for (std::size_t i = 0; i < instance.size(); ++i) {
-      collect(schema.at("items"), instance.at(i), pointer + "/" + std::to_string(i), schema_name,
-              out);
-    }
-  }
+  });
 }
 
 // Every default declared anywhere under a request schema, as "Schema.property".

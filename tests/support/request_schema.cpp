@@ -19,6 +19,54 @@ const json& resolve_schema(const json& schema) {
   return schema;
 }
 
+std::string schema_name_of(const json& schema_or_ref, std::string name) {
+  const std::string prefix = "#/components/schemas/";
+  const json* schema = &schema_or_ref;
+  while (schema->is_object() && schema->contains("$ref")) {
+    const std::string ref = schema->at("$ref").get<std::string>();
+    if (ref.rfind(prefix, 0) == 0 && ref.find('/', prefix.size()) == std::string::npos) {
+      name = ref.substr(prefix.size());
+    }
+    schema = &openapi_document().at(json::json_pointer(ref.substr(1)));
+  }
+  return name;
+}
+
+void walk_request_schema(const json& schema_or_ref, const json& instance,
+                         const std::string& pointer, const std::string& name,
+                         const std::function<void(const SchemaProperty&)>& visit) {
+  const std::string schema_name = schema_name_of(schema_or_ref, name);
+  const json& schema = resolve_schema(schema_or_ref);
+  if (!schema.is_object()) return;
+  for (const json& part : schema.value("allOf", json::array())) {
+    walk_request_schema(part, instance, pointer, schema_name, visit);
+  }
+  for (const char* choice : {"oneOf", "anyOf"}) {
+    for (const json& branch : schema.value(choice, json::array())) {
+      if (fits_branch(resolve_schema(branch), instance)) {
+        walk_request_schema(branch, instance, pointer, schema_name, visit);
+        break;
+      }
+    }
+  }
+  if (instance.is_object() && schema.contains("properties")) {
+    for (const auto& [key, property] : schema.at("properties").items()) {
+      const std::string child = pointer + "/" + key;
+      visit({child, schema_name + "." + key, property, resolve_schema(property),
+             instance.contains(key)});
+      if (instance.contains(key)) {
+        walk_request_schema(property, instance.at(key), child, schema_name, visit);
+      }
+    }
+  }
+  if (instance.is_array() && schema.contains("items")) {
+    for (std::size_t i = 0; i < instance.size(); ++i) {
+      walk_request_schema(schema.at("items"), instance.at(i), pointer + "/" + std::to_string(i),
+                          schema_name, visit);
+    }
+  }
+}
+
 bool fits_branch(const json& branch, const json& instance) {
   if (!instance.is_object() || !branch.contains("properties")) return false;
   const json& properties = branch.at("properties");

@@ -848,12 +848,14 @@ function check(c, r, pairAnswer) {
   const problem = r.status >= 400 && isObject(r.json) ? r.json : undefined;
   const errors = Array.isArray(problem?.errors) ? problem.errors.filter(isObject) : [];
   const sent = plain(c.body);
-  // every pointer names a member of the request (a missing required member: its parent exists)
+  // every pointer names a member of the request, or an absent member of an object the request
+  // has (a missing required member; or, as ProblemFieldError documents, a member whose default or
+  // implied value is at fault)
   for (const e of errors) {
     if (typeof e.pointer !== 'string' || e.pointer === '') continue;
     if (resolvePointer(sent, e.pointer).found) continue;
     const parentFound = resolvePointer(sent, parentOf(e.pointer).parent).found;
-    if (['required', 'required_choice'].includes(e.code) && parentFound) continue;
+    if (parentFound) continue;
     add('pointer_to_absent_member', `errors[] names ${e.pointer} (${e.code}), which the request does not have`, { at: `${generic(e.pointer)} ${e.code}` });
   }
   const fieldErrors = errors.filter(e => FIELD_CODES.has(e.code));
