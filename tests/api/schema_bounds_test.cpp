@@ -115,28 +115,13 @@ void branch_variants(const json& schema_or_ref, const json& instance, const std:
 // Every bound declared anywhere under a request schema, as "Schema.property keyword".
 void declared_bounds(const json& schema_or_ref, const std::string& name,
                      std::set<std::string>& seen_schemas, std::set<std::string>& out) {
-  const std::string schema_name = schema_name_of(schema_or_ref, name);
-  if (schema_or_ref.is_object() && schema_or_ref.contains("$ref") &&
-      !seen_schemas.insert(schema_name).second) {
-    return;
-  }
-  const json& schema = resolve_schema(schema_or_ref);
-  if (!schema.is_object()) return;
-  for (const char* list : {"allOf", "oneOf", "anyOf"}) {
-    for (const json& part : schema.value(list, json::array())) {
-      declared_bounds(part, schema_name, seen_schemas, out);
-    }
-  }
-  const json properties = schema.value("properties", json::object());  // named: items() views it
-  for (const auto& [key, property] : properties.items()) {
+  visit_declared_properties(schema_or_ref, name, seen_schemas, [&out](const SchemaProperty& field) {
     for (const char* keyword : kBoundKeywords) {
-      if (property.contains(keyword) || resolve_schema(property).contains(keyword)) {
-        out.insert(schema_name + "." + key + " " + keyword);
+      if (field.property.contains(keyword) || field.resolved.contains(keyword)) {
+        out.insert(field.origin + " " + keyword);
       }
     }
-    declared_bounds(property, schema_name, seen_schemas, out);
-  }
-  if (schema.contains("items")) declared_bounds(schema.at("items"), schema_name, seen_schemas, out);
+  });
 }
 
 // The last valid value of a bound and the first invalid one.

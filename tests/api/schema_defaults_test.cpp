@@ -45,28 +45,11 @@ void collect(const json& schema_or_ref, const json& instance, const std::string&
 // Every default declared anywhere under a request schema, as "Schema.property".
 void declared_defaults(const json& schema_or_ref, const std::string& name,
                        std::set<std::string>& seen_schemas, std::set<std::string>& out) {
-  std::string schema_name = name;
-  if (schema_or_ref.is_object() && schema_or_ref.contains("$ref")) {
-    const std::string ref = schema_or_ref.at("$ref").get<std::string>();
-    schema_name = ref.substr(ref.rfind('/') + 1);
-    if (!seen_schemas.insert(schema_name).second) return;
-  }
-  const json& schema = resolve_schema(schema_or_ref);
-  if (!schema.is_object()) return;
-  for (const char* list : {"allOf", "oneOf", "anyOf"}) {
-    for (const json& part : schema.value(list, json::array())) {
-      declared_defaults(part, schema_name, seen_schemas, out);
+  visit_declared_properties(schema_or_ref, name, seen_schemas, [&out](const SchemaProperty& field) {
+    if (field.property.contains("default") || field.resolved.contains("default")) {
+      out.insert(field.origin);
     }
-  }
-  const json properties = schema.value("properties", json::object());  // named: items() views it
-  for (const auto& [key, property] : properties.items()) {
-    if (property.contains("default") || resolve_schema(property).contains("default")) {
-      out.insert(schema_name + "." + key);
-    }
-    declared_defaults(property, schema_name, seen_schemas, out);
-  }
-  if (schema.contains("items"))
-    declared_defaults(schema.at("items"), schema_name, seen_schemas, out);
+  });
 }
 
 TEST(SchemaDefaults, EveryDefaultSentExplicitlyGivesTheAnswerOfOmittingIt) {

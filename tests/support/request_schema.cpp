@@ -67,6 +67,31 @@ void walk_request_schema(const json& schema_or_ref, const json& instance,
   }
 }
 
+void visit_declared_properties(const json& schema_or_ref, const std::string& name,
+                               std::set<std::string>& seen_schemas,
+                               const std::function<void(const SchemaProperty&)>& visit) {
+  const std::string schema_name = schema_name_of(schema_or_ref, name);
+  if (schema_or_ref.is_object() && schema_or_ref.contains("$ref") &&
+      !seen_schemas.insert(schema_name).second) {
+    return;
+  }
+  const json& schema = resolve_schema(schema_or_ref);
+  if (!schema.is_object()) return;
+  for (const char* list : {"allOf", "oneOf", "anyOf"}) {
+    for (const json& part : schema.value(list, json::array())) {
+      visit_declared_properties(part, schema_name, seen_schemas, visit);
+    }
+  }
+  const json properties = schema.value("properties", json::object());  // named: items() views it
+  for (const auto& [key, property] : properties.items()) {
+    visit({"", schema_name + "." + key, property, resolve_schema(property), false});
+    visit_declared_properties(property, schema_name, seen_schemas, visit);
+  }
+  if (schema.contains("items")) {
+    visit_declared_properties(schema.at("items"), schema_name, seen_schemas, visit);
+  }
+}
+
 bool fits_branch(const json& branch, const json& instance) {
   if (!instance.is_object() || !branch.contains("properties")) return false;
   const json& properties = branch.at("properties");

@@ -3,6 +3,7 @@
 // bounds) share.
 
 #include <functional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,12 @@ struct SchemaProperty {
 void walk_request_schema(const nlohmann::json& schema_or_ref, const nlohmann::json& instance,
                          const std::string& pointer, const std::string& name,
                          const std::function<void(const SchemaProperty&)>& visit);
+
+// Every property declared anywhere under `schema_or_ref` (given or not, every branch), once per
+// component schema (`seen_schemas` holds the names visited): what a test must be able to exercise.
+void visit_declared_properties(const nlohmann::json& schema_or_ref, const std::string& name,
+                               std::set<std::string>& seen_schemas,
+                               const std::function<void(const SchemaProperty&)>& visit);
 
 // The request body description (schema, examples) of POST `path`.
 const nlohmann::json& request_body(const std::string& path);
