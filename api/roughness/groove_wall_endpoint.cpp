@@ -2,10 +2,12 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
 #include "domain/roughness/groove_wall.h"
+#include "domain/roughness/groove_wall_bearing.h"
 #include "domain/roughness/groove_wall_curve.h"
 
 namespace cutcalc::api::roughness {
@@ -15,7 +17,7 @@ namespace model = domain::roughness;
 
 // Rz targets up to 1 km in micrometres: no meaningful surface is rougher.
 constexpr double kMaxTargetUm = 1.0e9;
-// curve_points: a line needs two points; 1000 is finer than any plot.
+// curve_points and bearing_points: a line needs two points; 1000 is finer than any plot.
 constexpr std::int64_t kMinCurvePoints = 2;
 constexpr std::int64_t kMaxCurvePoints = 1000;
 
@@ -40,6 +42,14 @@ nlohmann::json to_json(const model::GrooveWallCurve& curve) {
   return points;
 }
 
+nlohmann::json to_json(const std::vector<model::BearingPoint>& bearing_curve) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& point : bearing_curve) {
+    points.push_back({{"depth_um", point.depth_um}, {"material_ratio", point.material_ratio}});
+  }
+  return points;
+}
+
 }  // namespace
 
 HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
@@ -56,6 +66,11 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
     curve_points = static_cast<int>(
         in.required_integer("curve_points", kMinCurvePoints, kMaxCurvePoints).value_or(0));
   }
+  std::optional<int> bearing_points;
+  if (in.has("bearing_points")) {
+    bearing_points = static_cast<int>(
+        in.required_integer("bearing_points", kMinCurvePoints, kMaxCurvePoints).value_or(0));
+  }
   in.reject_unknown_fields();
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
@@ -68,6 +83,7 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
   // array, a cost paid on every answer of this hot endpoint.
   nlohmann::json out = nlohmann::json::object();
   out["rz_um"] = result.value().rz_um;
+  out["ra_um"] = result.value().ra_um;
   out["branch"] = to_string(result.value().branch);
   if (result.value().max_feed_mm) {
     out["max_feed_mm"] = *result.value().max_feed_mm;
@@ -78,6 +94,13 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
       return to_problem(curve.error(), {});
     }
     out["curve"] = to_json(curve.value());
+  }
+  if (bearing_points) {
+    const auto bearing_curve = model::compute_groove_wall_bearing_curve(params, *bearing_points);
+    if (!bearing_curve.ok()) {
+      return to_problem(bearing_curve.error(), {});
+    }
+    out["bearing_curve"] = to_json(bearing_curve.value());
   }
   return out;
 }

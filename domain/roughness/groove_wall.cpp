@@ -1,4 +1,5 @@
-// R1-R8 of spec roughness.md (paper 003): branch choice, the phi1 = 0 case and the target.
+// R1-R8 and R12 of spec roughness.md (paper 003): branch choice, Ra, the phi1 = 0 case and the
+// target.
 
 #include "domain/roughness/groove_wall.h"
 
@@ -6,36 +7,14 @@
 
 #include "domain/common/numeric.h"
 #include "domain/roughness/crest_branches.h"
+#include "domain/roughness/pitch_profile.h"
 #include "domain/roughness/units.h"
 
 namespace cutcalc::domain::roughness {
 
-namespace {
-
 using detail::kUmPerMm;
 
-struct Crest {
-  double Rz_mm = 0.0;  // Rz (R1), mm
-  CrestBranch branch = CrestBranch::nose_arc;
-};
-
-// R3-R5 with R2's limits; a limit value belongs to the lower branch (inferred in the spec).
-Crest crest_height(double S, double rho, const detail::MinorEdgeAngle& phi1) {
-  const detail::BranchLimits limits = detail::branch_limits(rho, phi1);
-  if (S <= limits.S_AB) {
-    return {detail::crest_height_nose_arc(S, rho), CrestBranch::nose_arc};
-  }
-  if (S <= limits.S_BC) {
-    return {detail::crest_height_nose_arc_and_minor_edge(S, rho, phi1, limits),
-            CrestBranch::nose_arc_and_minor_edge};
-  }
-  return {detail::crest_height_minor_edge_and_main_edge(S, rho, phi1, limits),
-          CrestBranch::minor_edge_and_main_edge};
-}
-
-}  // namespace
-
-// R1-R8
+// R1-R12
 Result<GrooveWallResult> compute_groove_wall_roughness(const GrooveWallParams& params) {
   const double S = params.feed_mm;                                  // S
   const double rho = params.nose_radius_mm;                         // rho
@@ -47,17 +26,19 @@ Result<GrooveWallResult> compute_groove_wall_roughness(const GrooveWallParams& p
     if (params.target_rz_um) {
       return make_error(ErrorCode::target_needs_minor_edge_angle);
     }
-    return GrooveWallResult{0.0, CrestBranch::nose_arc_and_minor_edge, std::nullopt};
+    // The profile is flat as well: Ra = 0 (R12).
+    return GrooveWallResult{0.0, 0.0, CrestBranch::nose_arc_and_minor_edge, std::nullopt};
   }
 
   const detail::MinorEdgeAngle phi1 = detail::minor_edge_angle(phi1_rad);
-  const Crest crest = crest_height(S, rho, phi1);
+  const detail::PitchProfile profile = detail::pitch_profile(S, rho, phi1);
   GrooveWallResult result;
-  result.rz_um = crest.Rz_mm * kUmPerMm;
-  result.branch = crest.branch;
+  result.rz_um = profile.Rz * kUmPerMm;
+  result.ra_um = detail::arithmetic_mean_deviation(profile) * kUmPerMm;
+  result.branch = profile.branch;
   // Only for absurd magnitudes (a pitch near 1e290 mm at phi1 near 90 deg); no model answer is
   // better than an infinite one.
-  if (!std::isfinite(result.rz_um)) {
+  if (!std::isfinite(result.rz_um) || !std::isfinite(result.ra_um)) {
     return make_error(ErrorCode::not_converged, "the crest height exceeds the range of a double");
   }
   if (params.target_rz_um) {

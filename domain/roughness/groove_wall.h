@@ -1,7 +1,8 @@
 #pragma once
-// Theoretical crest height Rz_p on a groove side wall left by a grooving tool's corner
-// (spec roughness.md part R, R1-R8; paper 003). Units: mm inside, Rz in micrometres, degrees.
-// Inputs are range-checked by the caller; this function checks what depends on several inputs.
+// Theoretical crest height Rz_p and arithmetic mean roughness Ra on a groove side wall left by a
+// grooving tool's corner (spec roughness.md part R, R1-R8, and R.7, R9-R12; paper 003). Units: mm
+// inside, Rz in micrometres, degrees. Inputs are range-checked by the caller; this function checks
+// what depends on several inputs.
 
 #include <optional>
 
@@ -24,11 +25,12 @@ enum class CrestBranch {
 
 struct GrooveWallResult {
   double rz_um = 0.0;  // Rz_p (R1)
+  double ra_um = 0.0;  // Ra of the profile over one pitch (R12); 0 for phi1 = 0
   CrestBranch branch = CrestBranch::nose_arc;
   std::optional<double> max_feed_mm;  // largest S with Rz(S) <= target (R8), with a target only
 };
 
-// R1-R8. Errors: target_needs_minor_edge_angle (a target with phi1 = 0).
+// R1-R12. Errors: target_needs_minor_edge_angle (a target with phi1 = 0).
 Result<GrooveWallResult> compute_groove_wall_roughness(const GrooveWallParams& params);
 
 }  // namespace cutcalc::domain::roughness
