@@ -115,8 +115,8 @@ const SECTIONS = [
     prefer: c => (c.request.target_rz_um !== undefined ? 0 : 1),
     keyboard: true,
     endpoints: { main: '/v1/roughness/groove-wall' },
-    shown: { main: ['/rz_um'] },
-    diagrams: { 'rz-vs-feed': ['curve', 'feed-marker'] },
+    shown: { main: ['/rz_um', '/ra_um'] },
+    diagrams: { 'rz-vs-feed': ['curve', 'feed-marker'], 'bearing-curve': ['bearing-curve'] },
     targetDiagramRoles: ['target-line', 'max-feed-line'],
   },
   {
@@ -911,6 +911,16 @@ describe('calculator page at 1280 px', () => {
         }
         const sources = new Set(shown.map(s => s.source));
         assert.ok(sources.has('entry-length') && sources.has('main-time'), 'both results are shown');
+      }
+      if (section.id === 'groove') {
+        // Ra with its caveat (errata R-E8), the bearing curve from the crest (0 %) through every
+        // point the API returned.
+        const bearing = bySource.main.json.bearing_curve;
+        assert.ok(Array.isArray(bearing) && bearing.length >= 2, 'groove: the page asked for a bearing curve');
+        const line = drawn['bearing-curve'].parts['bearing-curve'].find(p => p.tag === 'polyline');
+        assert.equal(line?.points, bearing.length + 1, 'groove: the bearing curve has the crest and every API point');
+        const caveat = await page.locator('#groove-result [data-role="ra-caveat"]').textContent();
+        assert.match(caveat ?? '', /R-E8/, `groove: the Ra caveat is shown: ${caveat}`);
       }
       if (section.id === 'polygon') {
         const polygon = drawn['polygon-hole'].parts.polygon.filter(p => p.tag === 'polygon');

@@ -1,5 +1,6 @@
-// Groove-wall roughness (paper 003): Rz of the feed marks, the branch of the model and, with a
-// target, the largest feed; the plot Rz(feed) comes from the same request (curve_points).
+// Groove-wall roughness (paper 003): Rz and Ra of the feed marks, the branch of the model and,
+// with a target, the largest feed; the plot Rz(feed) and the bearing curve of the wall profile come
+// from the same request (curve_points, bearing_points).
 
 import { onCalculate } from './calculation.js';
 import { csvButton } from './export.js';
@@ -20,6 +21,7 @@ import { domain, figure, plot, points, s } from './svg.js';
 
 const PATH = '/v1/roughness/groove-wall';
 const CURVE_POINTS = 200;
+const BEARING_POINTS = 100;
 // The curve's fields (the answer's curve[] items) and units, for its CSV.
 const CURVE_COLUMNS = [
   ['feed_mm', 'mm'],
@@ -34,7 +36,11 @@ export function init() {
   const result = document.getElementById('groove-result');
   return onCalculate(form, async (api) => {
     const body = readBody(form);
-    const answer = await api.postJson(PATH, { ...body, curve_points: CURVE_POINTS });
+    const answer = await api.postJson(PATH, {
+      ...body,
+      curve_points: CURVE_POINTS,
+      bearing_points: BEARING_POINTS,
+    });
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);
@@ -46,6 +52,7 @@ export function init() {
       h('h3', {}, t('result.theoretical_roughness')),
       valueList(response, [
         [[t('result.crest_height'), ' ', ...sym('Rz', 'p')], '/rz_um', 'um'],
+        [[t('result.groove_mean_roughness'), ' ', ...sym('Ra', 'p')], '/ra_um', 'um'],
         [
           [t('result.largest_feed'), ' ', ...sym('S', 'max'), ...iso('f', 'max')],
           '/max_feed_mm',
@@ -57,6 +64,11 @@ export function init() {
         'p',
         { class: 'source-note' },
         tn('result.rz_lower_bound'),
+      ),
+      h(
+        'p',
+        { class: 'source-note', 'data-role': 'ra-caveat' },
+        tn('result.groove_ra_lower_bound'),
       ),
     );
     if (Array.isArray(response.curve) && response.curve.length >= 2) {
@@ -72,7 +84,38 @@ export function init() {
     } else {
       result.append(noDiagram(t('result.no_curve')));
     }
+    if (Array.isArray(response.bearing_curve) && response.bearing_curve.length >= 2) {
+      result.append(bearingPlot(response));
+    } else {
+      result.append(noDiagram(t('result.groove_no_bearing_curve')));
+    }
   });
+}
+
+// The bearing (Abbott-Firestone) curve as ISO 4287 draws it: the material ratio across, the
+// level of the cut down from the crest (height above the valleys, so the crest is on top).
+function bearingPlot(response) {
+  const rz = response.rz_um;
+  const curve = [[0, rz]].concat(
+    response.bearing_curve.map((p) => [100 * p.material_ratio, rz - p.depth_um]),
+  );
+  const chart = plot({
+    kind: 'bearing-curve',
+    title: t('diagram.groove_bearing_title'),
+    xLabel: t('diagram.groove_material_ratio_axis'),
+    yLabel: t('diagram.groove_height_axis', { unit: unitText('um') }),
+    xDomain: [0, 100],
+    yDomain: domain([0, rz > 0 ? rz : 1], 0.08, true),
+  });
+  const { x, y } = chart;
+  chart.layer.append(
+    s('polyline', {
+      'data-role': 'bearing-curve',
+      class: 's-curve',
+      points: points(curve.map(([ratio, level]) => [x(ratio), y(level)])),
+    }),
+  );
+  return figure(chart.svg, [{ cls: 's-curve', label: t('legend.groove_bearing_curve') }]);
 }
 
 // The feed (x) in the page's units: the curve keeps its shape, its axis reads in mm or inches.
