@@ -49,7 +49,7 @@ std::span<const CalculationRoute> calculation_routes() {
                        .handler = &polygon::handle_polygon_hole,
                        .forms = json_and_plain_text_program,
                        .plot = {"include_geometry", "true", ""},
-                       .reference_files = {"polygon-hole.json"},
+                       .reference_files = {"polygon-hole.json", "next/polygon-hole.json"},
                        .page_section = "polygon"},
   };
   return routes;

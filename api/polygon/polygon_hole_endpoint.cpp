@@ -50,6 +50,8 @@ model::PolygonHoleParams read_params(ObjectReader& in) {
   }
   params.safe_z_mm = in.number_or("safe_z_mm", Bounds::positive(), params.safe_z_mm);
   params.block_time_ms = in.number_or("block_time_ms", Bounds::positive(), params.block_time_ms);
+  params.rapid_mm_per_min =
+      in.number_or("rapid_mm_per_min", Bounds::positive(), params.rapid_mm_per_min);
   return params;
 }
 
@@ -75,6 +77,23 @@ PolygonHoleRequest read_request(const nlohmann::json& body, ObjectReader& in,
   return request;
 }
 
+nlohmann::json to_json(const model::RotorDimensions& rotor) {
+  nlohmann::json arcs = nlohmann::json::array();
+  for (const auto& arc : rotor.flank_arcs) {
+    arcs.push_back({{"radius_mm", arc.radius_mm},
+                    {"centre", {{"x_mm", arc.centre_x_mm}, {"y_mm", arc.centre_y_mm}}},
+                    {"start_angle_deg", arc.start_angle_deg},
+                    {"end_angle_deg", arc.end_angle_deg}});
+  }
+  return {{"corners", rotor.corners},
+          {"corner_circle_diameter_mm", rotor.corner_circle_diameter_mm},
+          {"corner_angle_deg", rotor.corner_angle_deg},
+          {"flank_arcs", std::move(arcs)},
+          {"width_min_mm", rotor.width_min_mm},
+          {"width_max_mm", rotor.width_max_mm},
+          {"neck_diameter_max_mm", rotor.neck_diameter_max_mm}};
+}
+
 nlohmann::json to_json(const model::PolygonHoleResult& result) {
   return {{"program", result.program},
           {"blocks_per_loop", result.blocks_per_loop},
@@ -86,6 +105,12 @@ nlohmann::json to_json(const model::PolygonHoleResult& result) {
           {"uncut_corner_area_mm2", result.uncut_corner_area_mm2},
           {"corner_gap_mm", result.corner_gap_mm},
           {"max_feed_by_block_rate_mm_per_min", result.max_feed_by_block_rate_mm_per_min},
+          {"rotor", to_json(result.rotor)},
+          {"corner_radius_mm", result.corner_radius_mm},
+          {"working_time_min", result.time.working_min},
+          {"plunge_time_min", result.time.plunge_min},
+          {"rapid_time_min", result.time.rapid_min},
+          {"cycle_time_min", result.time.cycle_min},
           {"warnings", program::to_json(result.warnings)},
           {"file_name", result.file_name}};
 }

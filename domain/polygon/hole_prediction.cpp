@@ -74,7 +74,8 @@ double corner_gap(const PolygonShape& shape) {
 }
 
 // P16: rho_c = |X'|^3 / |X' x X''| at t* with X' = c' - r n(theta_1 - t + pi/2),
-// X'' = c'' - r n(theta_1 - t).
+// X'' = c'' - r n(theta_1 - t). P31: for odd N, t* is a phase join where c'' jumps; the phase
+// that ends at t* (t* - 0) is taken, not the one floor(t* / delta) would pick.
 double corner_wall_min_radius(const CentrePath& path) {
   const PolygonShape& shape = path.shape();
   if (shape.N == 3) {
@@ -82,9 +83,12 @@ double corner_wall_min_radius(const CentrePath& path) {
   }
   const double theta_1 = -0.5 * std::numbers::pi + 2.0 * std::numbers::pi / shape.M;
   const double t_star = 0.5 * (shape.N + 1.0) * shape.delta;
-  const Eigen::Vector2d X1 =
-      path.velocity(t_star) - shape.r * unit(theta_1 - t_star + 0.5 * std::numbers::pi);
-  const Eigen::Vector2d X2 = path.acceleration(t_star) - shape.r * unit(theta_1 - t_star);
+  const int phase = shape.N % 2 == 1 ? (shape.N + 1) / 2 - 1 : shape.N / 2;  // ends at / holds t*
+  const double theta = t_star - phase * shape.delta;
+  const Eigen::Vector2d X1 = path.velocity_in_phase(phase, theta) -
+                             shape.r * unit(theta_1 - t_star + 0.5 * std::numbers::pi);
+  const Eigen::Vector2d X2 =
+      path.acceleration_in_phase(phase, theta) - shape.r * unit(theta_1 - t_star);
   const double speed = X1.norm();
   return speed * speed * speed / std::abs(cross(X1, X2));
 }

@@ -22,8 +22,8 @@ Eigen::Vector2d corner_path(const CentrePath& path, double t);
 // P15: corner_gap_mm g, vertex -> cut wall on the bisector (same units as the shape).
 double corner_gap(const PolygonShape& shape);
 
-// P16: the smallest radius of curvature of the corner wall, that of X at t* = (N+1) delta / 2
-// (0 for N = 3).
+// P16, P31: the smallest radius of curvature of the corner wall, that of X at
+// t* = (N+1) delta / 2 (0 for N = 3).
 double corner_wall_min_radius(const CentrePath& path);
 
 // P17: kappa_A(N), the uncut area of all N corners over d^2. Tabulated to 10 digits from the

@@ -1,4 +1,4 @@
-// generate_polygon_hole: spec polygon-holes.md P1-P27 put together (paper 004, corrected).
+// generate_polygon_hole: spec polygon-holes.md P1-P34 put together (paper 004, corrected).
 // The fit runs on the unit-diameter hole (d = 1) and is scaled to mm for the output, so that no
 // diameter overflows the squares of P19.
 
@@ -13,9 +13,11 @@
 #include "domain/polygon/centre_path.h"
 #include "domain/polygon/gcode_writer.h"
 #include "domain/polygon/hole_prediction.h"
+#include "domain/polygon/machining_time.h"
 #include "domain/polygon/polygon_geometry.h"
 #include "domain/polygon/printed_deviation.h"
 #include "domain/polygon/rotor.h"
+#include "domain/polygon/rotor_dimensions.h"
 
 namespace cutcalc::domain::polygon {
 
@@ -95,6 +97,24 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   // P27
   result.max_feed_by_block_rate_mm_per_min = detail::max_feed_by_block_rate(
       detail::shortest_block_length(blocks) * d, params.block_time_ms);
+  // P28-P31
+  result.rotor = detail::rotor_dimensions(shape_mm);
+  result.corner_radius_mm = detail::corner_wall_min_radius(path) * d;
+  // P32-P34, from the unrounded L_p
+  result.time = detail::machining_time(
+      {.N = N,
+       .layers = layers.n,
+       .dz_mm = layers.dz,
+       .loops_per_layer = loops_per_layer,
+       .spindle_speed_rpm = params.spindle_speed_rpm,
+       .loop_length_mm = result.loop_length_mm,
+       .feed_per_rev_mm = result.feed_per_rev_mm,
+       .safe_z_mm = params.safe_z_mm,
+       .depth_mm = params.depth_mm,
+       .rapid_mm_per_min = params.rapid_mm_per_min,
+       .synchronization = params.synchronization,
+       .plunge_at_ramp_feed =
+           !(params.program && params.program->dialect == program::Dialect::fanuc)});
   result.warnings = detail::program_warnings(params.synchronization,
                                              params.spindle_speed_rpm * result.feed_per_rev_mm,
                                              result.max_feed_by_block_rate_mm_per_min);

@@ -170,6 +170,20 @@ std::string polygon_program(int faces, double d) {
          "G0 Z5.0000\nG94\nM5\nM30\n%\n";
 }
 
+// The rotor, corner radius and times of the square a = 16 at 30 rpm in 2 layers (spec
+// polygon-holes.md section 13's worked figures), members every polygon-hole answer has.
+json polygon_rotor_and_times() {
+  return json::parse(R"({"rotor": {"corners": 3, "corner_circle_diameter_mm": 18.4752,
+    "corner_angle_deg": 120.0, "width_min_mm": 16.0, "width_max_mm": 16.0,
+    "neck_diameter_max_mm": 13.5248, "flank_arcs": [
+      {"radius_mm": 16.0, "centre": {"x_mm": -8.0, "y_mm": 4.6188}, "start_angle_deg": -60.0,
+       "end_angle_deg": -30.0},
+      {"radius_mm": 16.0, "centre": {"x_mm": -8.0, "y_mm": 4.6188}, "start_angle_deg": -30.0,
+       "end_angle_deg": 0.0}]},
+    "corner_radius_mm": 1.5692, "working_time_min": 0.066667, "plunge_time_min": 0.0069368,
+    "rapid_time_min": 0.00052, "cycle_time_min": 0.0741238})");
+}
+
 // A complete answer to polygon_hole_request() (reference case square_a16_g95 and its info).
 json polygon_hole_body() {
   json body = json::parse(R"({"blocks_per_loop": 25, "loop_length_mm": 8.00822093506,
@@ -179,6 +193,7 @@ json polygon_hole_body() {
     "max_feed_by_block_rate_mm_per_min": 6880.93938,
     "warnings": [{"code": "phase_not_locked", "detail": "G95 does not lock the phase"}]})");
   body["program"] = polygon_program(4, 16.0);
+  body.update(polygon_rotor_and_times());
   return body;
 }
 
@@ -209,6 +224,12 @@ json complete_polygon_body(const json& reference_case) {
   }
   body["program"] =
       polygon_program(request["faces"].get<int>(), request["inscribed_diameter_mm"].get<double>());
+  const json rotor_and_times = polygon_rotor_and_times();
+  for (const auto& [key, value] : rotor_and_times.items()) {
+    if (!body.contains(key)) {
+      body[key] = value;  // the older file states no rotor or time
+    }
+  }
   return body;
 }
 

@@ -150,8 +150,8 @@ TEST(RouteTable, PrintedAsJsonWithEveryField) {
   EXPECT_EQ(polygon["forms"], json({"json", "plain_text"}));
   EXPECT_EQ(polygon["plot_field"]["name"], "include_geometry");
   EXPECT_EQ(polygon["plot_field"]["example"], true);
-  EXPECT_EQ(polygon["reference_files"], json({"polygon-hole.json"}));
-  EXPECT_EQ(polygon["next_reference_files"], json::array());
+  EXPECT_EQ(polygon["reference_files"], json({"polygon-hole.json", "next/polygon-hole.json"}));
+  EXPECT_EQ(polygon["next_reference_files"], json({"next/polygon-hole.json"}));
   EXPECT_EQ(polygon["page_section"], "polygon");
   const json& main_time = rows[1];
   EXPECT_EQ(main_time["plot_field"], nullptr);

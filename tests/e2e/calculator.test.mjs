@@ -136,6 +136,7 @@ const SECTIONS = [
     diagrams: {
       'polygon-hole': ['polygon', 'centre-path', 'predicted-hole', 'rotor'],
       'polygon-corner': ['polygon', 'predicted-hole'],
+      'polygon-rotor': ['rotor', 'corner-circle', 'neck-circle', 'corner-circle-diameter', 'neck-diameter', 'flank-radius', 'corner-angle'],
     },
   },
 ];

@@ -42,7 +42,7 @@ const SECTIONS = [
   { id: 'speeds', title: 'Resultant cutting speeds', own: ['Tool radius R', 'Workpiece speed n'] },
   { id: 'groove', title: 'Groove-wall roughness', own: ['Theoretical roughness', 'Target Rz T'] },
   { id: 'bore', title: 'Bore milling roughness', own: ['Cusp between adjacent tooth paths', 'Bore radius R'] },
-  { id: 'polygon', title: 'Polygon-hole G-code', own: ['Inscribed diameter d', 'Arc-fit tolerance'] },
+  { id: 'polygon', title: 'Polygon-hole G-code', own: ['Inscribed diameter d', 'Arc-fit tolerance', 'Rotor tool: grinding and checking dimensions', 'Plunge to Z0'] },
 ];
 // Sections here are optional, but each is a page section of the route table (cutcalc --routes).
 test('every section here is a page section of the route table, in its order', () => {

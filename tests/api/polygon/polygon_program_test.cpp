@@ -38,6 +38,9 @@ JsonReply post_checked(const json& request) {
 
 TEST(PolygonProgram, WithoutAProgramObjectTheAnswerNamesTodaysProgram) {
   for (const json& request : ok_requests()) {
+    if (request.contains("program")) {
+      continue;  // a next/ case asks for a dialect
+    }
     const JsonReply reply = post_checked(request);
     ASSERT_EQ(reply.status, 200);
     EXPECT_EQ(reply.json.at("dialect"), "linuxcnc");
