@@ -6,7 +6,8 @@
 // errors[] naming expect.pointer, as application/problem+json; the program facts of
 // expect.program: loops, layers, z_min, g95_flat_F, g94_F, last_C) and every answer, success or
 // problem, against openapi.yaml (contract.mjs: Ajv, JSON Schema 2020-12; status, media type,
-// headers, body). rs274 acceptance of the programs (expect.program.rs274) is tests/gcode's.
+// headers, body). A case listed in reference-corrections.mjs (a request that contradicts the spec
+// it cites) is replayed with its corrected request, said in the output. rs274 acceptance of the programs (expect.program.rs274) is tests/gcode's.
 //
 // Where cutcalc is:
 //   --start BIN          starts BIN on a free loopback port (ctest: the build's own binary)
@@ -57,6 +58,7 @@ import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { loadRoutes, replayedReferenceFiles } from '../routes/route_table.mjs';
 import { Contract, isJsonMediaType } from './contract.mjs';
+import { correctedCases } from './reference-corrections.mjs';
 
 const require = createRequire(import.meta.url);
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -132,7 +134,9 @@ function referenceCases() {
   const firstValid = {};
   for (const file of files) {
     const doc = JSON.parse(readFileSync(path.join(REFERENCE_DIR, file), 'utf8'));
-    const chosen = pick(doc.cases ?? []);
+    doc.cases = correctedCases(file, doc.cases ?? [], why => setupError(`STALE reference correction: ${why} (tools/contract/reference-corrections.mjs)`));
+    for (const c of doc.cases) if (c.correction) console.log(`replay: ${file}:${c.id} replayed with a corrected request: ${c.correction}`);
+    const chosen = pick(doc.cases);
     if (chosen.length === 0) setupError(`${file} has no cases`);
     for (const c of doc.cases) {
       if (c.expect.status === 200) firstValid[doc.endpoint] ??= c.request;
