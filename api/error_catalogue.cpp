@@ -95,6 +95,11 @@ constexpr std::array kCatalogue{
     Entry{ErrorCode::word_prints_as_zero,
           "a feed or the spindle speed is too small to print with this many decimals",
           "подача или частота вращения слишком малы для вывода с таким числом знаков"},
+    Entry{ErrorCode::finish_depth_not_below_depth,
+          "the finishing depth of cut must be less than the depth allowance (at least one "
+          "roughing level)",
+          "глубина чистового прохода должна быть меньше припуска по глубине (хотя бы один "
+          "черновой проход)"},
     Entry{ErrorCode::required, "is required", "обязательное поле"},
     Entry{ErrorCode::required_choice, "is required (one of: {allowed})",
           "обязательное поле (одно из: {allowed})"},

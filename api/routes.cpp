@@ -23,7 +23,7 @@ std::span<const CalculationRoute> calculation_routes() {
                        .page_section = "entry"},
       CalculationRoute{.path = "/v1/main-time",
                        .handler = &entry::handle_main_time,
-                       .reference_files = {"main-time.json"},
+                       .reference_files = {"main-time.json", "next/main-time.json"},
                        .page_section = "entry"},
       CalculationRoute{.path = "/v1/main-time/program",
                        .handler = &entry::handle_main_time_program,

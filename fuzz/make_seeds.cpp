@@ -5,7 +5,8 @@
 //    endpoint_fuzzer once per line;
 //  - <out dir>/<slug>/<index>_<case id>.json: every case's `request` of the reference files
 //    (<reference dir>/*.json plus the next/ files the routes list), plus the same request asking
-//    for the route's plot data (its plot field) and, for the polygon program, other dialects;
+//    for the route's plot data (its plot field), for the polygon program, other dialects, and
+//    for the pass program, the main-time requests with pass_split or finish;
 //  - <out dir>/tokens.dict: libFuzzer dictionary entries: the keys and string values of the
 //    requests, every property name and string enum/const of openapi.yaml, each plot field with
 //    its example value;
@@ -272,6 +273,20 @@ int main(int argc, char** argv) {
                                 {"coolant", "mist"}};
           dialect["machine"] = {{"max_spindle_rpm", 100}, {"max_feed_mm_per_min", 1000}};
           std::ofstream(corpus / ("program-" + name)) << dialect.dump();
+          ++seeds;
+        }
+        // Main-time requests with equal passes or a finishing level (entry-and-main-time.md
+        // section 15) also seed the pass program, which takes the same fields and has no such
+        // reference case of its own.
+        if (endpoint == "/v1/main-time" && request.is_object() &&
+            (request.contains("pass_split") || request.contains("finish"))) {
+          nlohmann::json program = request;
+          program.erase("extra_path_mm");
+          program["program"] = {{"dialect", seeds % 2 == 0 ? "fanuc" : "sinumerik"},
+                                {"units", "inch"}};
+          const fs::path program_corpus =
+              out_dir / cutcalc::api::route_slug("/v1/main-time/program");
+          std::ofstream(program_corpus / ("main-time-" + name)) << program.dump();
           ++seeds;
         }
       }

@@ -20,6 +20,7 @@ inline constexpr ErrorPointer kEntryErrorPointers[] = {
     {domain::ErrorCode::entry_feed_exceeds_feed, "/entry_feed_per_tooth_mm"},
     {domain::ErrorCode::too_many_lateral_passes, "/allowance/width_of_cut_mm"},
     {domain::ErrorCode::too_many_depth_passes, "/allowance/depth_of_cut_mm"},
+    {domain::ErrorCode::finish_depth_not_below_depth, "/finish/depth_of_cut_mm"},
 };
 
 }  // namespace cutcalc::api::entry

@@ -120,6 +120,26 @@ nlohmann::json to_json(const domain::entry::LateralPass& pass) {
   return out;
 }
 
+nlohmann::json to_json(const domain::entry::FinishLevel& finish) {
+  nlohmann::json passes = nlohmann::json::array();
+  for (const auto& times : finish.lateral_passes) {
+    passes.push_back({{"entry_time_min", times.entry_time_min},
+                      {"steady_time_min", times.steady_time_min},
+                      {"time_min", times.time_min}});
+  }
+  nlohmann::json out = nlohmann::json::object();
+  out["depth_mm"] = finish.depth_mm;
+  out["spindle_speed_rpm"] = finish.spindle_speed_rpm;
+  out["feed_per_rev_mm"] = finish.feed_per_rev_mm;
+  out["feed_mm_per_min"] = finish.feed_mm_per_min;
+  out["entry_feed_mm_per_min"] = finish.entry_feed_mm_per_min;
+  out["lateral_passes"] = std::move(passes);
+  out["entry_time_min"] = finish.entry_time_min;
+  out["steady_time_min"] = finish.steady_time_min;
+  out["time_min"] = finish.time_min;
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json to_json(const domain::entry::MainTimeResult& result) {
@@ -134,6 +154,9 @@ nlohmann::json to_json(const domain::entry::MainTimeResult& result) {
   out["entry_feed_mm_per_min"] = result.entry_feed_mm_per_min;
   out["depth_passes_mm"] = result.depth_passes_mm;
   out["lateral_passes"] = std::move(passes);
+  if (result.finish) {
+    out["finish"] = to_json(*result.finish);  // E39-E41, only with a finishing level
+  }
   out["main_time_min"] = result.main_time_min;
   out["entry_time_min"] = result.entry_time_min;
   out["steady_time_min"] = result.steady_time_min;

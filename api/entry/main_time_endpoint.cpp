@@ -12,8 +12,9 @@ namespace cutcalc::api::entry {
 nlohmann::json main_time_json(const domain::entry::MainTimeResult& result,
                               const domain::program::MachineLimits& limits) {
   nlohmann::json json = to_json(result);
-  json["warnings"] = program::to_json(domain::program::limit_warnings(
-      result.spindle_speed_rpm, domain::program::setup_feeds_mm_per_min(result), limits));
+  json["warnings"] = program::to_json(
+      domain::program::limit_warnings(domain::program::setup_top_spindle_rpm(result),
+                                      domain::program::setup_feeds_mm_per_min(result), limits));
   return json;
 }
 

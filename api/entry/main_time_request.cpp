@@ -1,5 +1,8 @@
 #include "api/entry/main_time_request.h"
 
+#include <optional>
+#include <vector>
+
 #include "api/entry/contour_reader.h"
 #include "api/field_reader.h"
 #include "api/program/program_reader.h"
@@ -22,7 +25,33 @@ domain::entry::Allowance read_allowance(ObjectReader& in) {
   return out;
 }
 
-MainTimeParams read_params(ObjectReader& in, bool with_program) {
+// E39-E40: the finishing level; a field error for each bad member, and both speeds at "".
+std::optional<domain::entry::Finish> read_finish(ObjectReader& in,
+                                                 std::vector<FieldError>& errors) {
+  ObjectReader finish = in.object("finish", false);
+  if (!finish.present()) return std::nullopt;
+  domain::entry::Finish out;
+  out.depth_of_cut_mm = finish.required_number("depth_of_cut_mm", Bounds::positive()).value_or(0.0);
+  out.feed_per_tooth_mm =
+      finish.required_number("feed_per_tooth_mm", Bounds::positive()).value_or(0.0);
+  const auto rpm = finish.optional_number("spindle_speed_rpm", Bounds::positive());
+  const auto cutting_speed = finish.optional_number("cutting_speed_m_per_min", Bounds::positive());
+  if (rpm) {
+    out.speed = domain::entry::SpindleSpeed{*rpm};
+  } else if (cutting_speed) {
+    out.speed = domain::entry::CuttingSpeed{*cutting_speed};
+  }
+  if (finish.has("spindle_speed_rpm") && finish.has("cutting_speed_m_per_min")) {
+    errors.push_back(
+        {"",
+         ErrorCode::exclusive_fields,
+         {{"fields", {"finish.spindle_speed_rpm", "finish.cutting_speed_m_per_min"}}}});
+  }
+  finish.reject_unknown_fields();
+  return out;
+}
+
+MainTimeParams read_params(ObjectReader& in, bool with_program, std::vector<FieldError>& errors) {
   MainTimeParams params;
   params.cutter_diameter_mm =
       in.required_number("cutter_diameter_mm", Bounds::positive()).value_or(0);
@@ -64,6 +93,10 @@ MainTimeParams read_params(ObjectReader& in, bool with_program) {
   params.exit = read_contour(exit, ContourSide::exit).value_or(domain::entry::Contour{});
   params.offset_mm = in.optional_number("offset_mm", Bounds::magnitude());
   params.allowance = read_allowance(in);
+  if (in.optional_choice("pass_split", {"last_smaller", "equal"}) == "equal") {
+    params.pass_split = domain::entry::PassSplit::equal;  // E37
+  }
+  params.finish = read_finish(in, errors);
   return params;
 }
 
@@ -89,7 +122,7 @@ std::variant<MainTimeRequest, Problem> read_main_time_request(const nlohmann::js
   std::vector<FieldError> errors;
   ObjectReader in = root_reader(body, errors);
   MainTimeRequest request;
-  request.params = read_params(in, with_program);
+  request.params = read_params(in, with_program, errors);
   if (with_program) {
     request.program = program::read_program_options(in, program::ProgramKind::pass_program);
   }

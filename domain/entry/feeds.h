@@ -1,5 +1,5 @@
 #pragma once
-// Spindle speed and feeds (E30-E33). Private to domain/entry.
+// Spindle speed and feeds (E30-E33, E40). Private to domain/entry.
 
 #include "domain/common/result.h"
 #include "domain/entry/main_time.h"
@@ -15,5 +15,9 @@ struct Feeds {
 
 // E30-E33. Error: entry_feed_exceeds_feed (S_z1 > S_z).
 Result<Feeds> compute_feeds(const MainTimeParams& params);
+
+// E40: the finishing level's n_f, S_m2f, S_m1f (params.finish given; `roughing` = E30-E33).
+// Error: entry_feed_exceeds_feed (S_z1 > S_zf).
+Result<Feeds> compute_finish_feeds(const MainTimeParams& params, const Feeds& roughing);
 
 }  // namespace cutcalc::domain::entry::detail

@@ -3,6 +3,7 @@
 // feed on each entry section (spec entry-and-main-time.md E24-E36; paper 002). Units: millimetres,
 // rev/min, mm/min, m/min for the cutting speed, minutes for times.
 
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -37,6 +38,20 @@ struct Allowance {
   double depth_of_cut_mm = 0.0;  // t0
 };
 
+// E37: how an allowance is divided into passes of at most one cut each.
+enum class PassSplit {
+  last_smaller,  // E25: full cuts, then the remainder (default)
+  equal,         // E37: N equal passes (the paper's recommendation, section 7.1)
+};
+
+// E39: the last depth level as a finishing level with its own depth, feed and speed.
+struct Finish {
+  double depth_of_cut_mm = 0.0;    // t_f
+  double feed_per_tooth_mm = 0.0;  // S_zf
+  // n_f (E40); absent: the roughing spindle speed n.
+  std::optional<std::variant<SpindleSpeed, CuttingSpeed>> speed;
+};
+
 struct MainTimeParams {
   double cutter_diameter_mm = 0.0;  // D
   int teeth = 1;                    // z
@@ -51,6 +66,8 @@ struct MainTimeParams {
   Contour exit;
   std::optional<double> offset_mm;  // K; only with one lateral pass
   Allowance allowance;
+  PassSplit pass_split = PassSplit::last_smaller;  // E37; applies to widths and depths
+  std::optional<Finish> finish;                    // E39
 };
 
 struct LateralPass {
@@ -66,23 +83,47 @@ struct LateralPass {
   double entry_time_min = 0.0;        // t_e,i for one traverse (E34)
   double steady_time_min = 0.0;       // t_s,i for one traverse (E34)
   double time_min = 0.0;              // t_i (E34)
+  // Not in the answer: Y_(i-1), the side of the strip still uncut (E27; program coordinates).
+  double lower_boundary_mm = 0.0;
+};
+
+// One traverse of a lateral pass at the finishing level's feeds (E41: t_i,f).
+struct PassTimes {
+  double entry_time_min = 0.0;   // L_vr,i / S_m1f
+  double steady_time_min = 0.0;  // (L_rx,i - L_vr,i) / S_m2f
+  double time_min = 0.0;         // t_i,f
+};
+
+// The finishing level (E39-E41): one traverse of every lateral pass at its own feeds.
+struct FinishLevel {
+  double depth_mm = 0.0;               // t_f
+  double spindle_speed_rpm = 0.0;      // n_f (E40)
+  double feed_per_rev_mm = 0.0;        // z S_zf
+  double feed_mm_per_min = 0.0;        // S_m2f (E40)
+  double entry_feed_mm_per_min = 0.0;  // S_m1f (E40)
+  std::vector<PassTimes> lateral_passes;
+  double entry_time_min = 0.0;   // sum_i L_vr,i / S_m1f
+  double steady_time_min = 0.0;  // sum_i (L_rx,i - L_vr,i) / S_m2f
+  double time_min = 0.0;         // sum_i t_i,f
 };
 
 struct MainTimeResult {
-  double spindle_speed_rpm = 0.0;       // n (E30)
-  double feed_per_rev_mm = 0.0;         // S_o (E31)
-  double feed_mm_per_min = 0.0;         // S_m2 (E32)
-  double entry_feed_mm_per_min = 0.0;   // S_m1 (E33)
-  std::vector<double> depth_passes_mm;  // E25
-  std::vector<LateralPass> lateral_passes;
-  double main_time_min = 0.0;    // T_o (E35)
-  double entry_time_min = 0.0;   // E36
-  double steady_time_min = 0.0;  // E36
+  double spindle_speed_rpm = 0.0;           // n (E30)
+  double feed_per_rev_mm = 0.0;             // S_o (E31)
+  double feed_mm_per_min = 0.0;             // S_m2 (E32)
+  double entry_feed_mm_per_min = 0.0;       // S_m1 (E33)
+  std::vector<double> depth_passes_mm;      // E25
+  std::vector<LateralPass> lateral_passes;  // times: one roughing traverse
+  std::optional<FinishLevel> finish;        // only with params.finish: the last depth level
+  double main_time_min = 0.0;               // T_o (E35, E41)
+  double entry_time_min = 0.0;              // E36
+  double steady_time_min = 0.0;             // E36
 };
 
-// E24-E36. Errors: every error of compute_entry_length, plus offset_with_several_passes,
+// E24-E41. Errors: every error of compute_entry_length, plus offset_with_several_passes,
 // allowance_wider_than_part, allowance_not_full_width, width_of_cut_exceeds_diameter,
-// entry_feed_exceeds_feed, too_many_lateral_passes, too_many_depth_passes.
+// entry_feed_exceeds_feed (also against the finishing S_zf), too_many_lateral_passes,
+// too_many_depth_passes, finish_depth_not_below_depth.
 Result<MainTimeResult> compute_main_time(const MainTimeParams& params);
 
 }  // namespace cutcalc::domain::entry

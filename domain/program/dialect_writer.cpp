@@ -62,6 +62,9 @@ class Writer {
   void block(const SpindleOn& on) {
     line(cat({"S", spindle_text(on.rpm, options_.dialect, decimals_), " ", words_.spindle_on}));
   }
+  void block(const SpeedChange& change) {
+    line(cat({"S", spindle_text(change.rpm, options_.dialect, decimals_)}));
+  }
   void block(const SpindleOff&) { line(words_.spindle_off); }
   void block(const CoolantOn& on) {
     line(on.coolant == Coolant::mist ? words_.mist : words_.flood);

@@ -1,7 +1,9 @@
-// Spec programs.md section 1: frame G1-G3, passes G4-G7, block sequence, times G8-G11.
+// Spec programs.md section 1: frame G1-G3, passes G4-G7, block sequence, times G8-G11; the
+// levels' own feeds and speed of entry-and-main-time.md section 15 (E41).
 
 #include "domain/program/pass_program.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "domain/common/numeric.h"
@@ -32,13 +34,40 @@ std::vector<Traverse> traverses(const entry::MainTimeParams& params,
   for (std::size_t i = 0; i < lateral; ++i) {
     const entry::LateralPass& pass = main_time.lateral_passes[i];
     Traverse t;
-    const double strip_side_mm =
-        static_cast<double>(i) * params.allowance.width_of_cut_mm;  // Y_(i-1)
+    const double strip_side_mm = pass.lower_boundary_mm;  // Y_(i-1) (E27, E38)
     t.x_start_mm = (strips ? strip_side_mm * cot_alpha : 0.0) - pass.start.x_mm;
     t.x_entry_end_mm = t.x_start_mm + pass.entry_length_mm;
     t.x_end_mm = t.x_start_mm + pass.working_stroke_mm;
     t.y_mm = pass.axis_y_mm;
     out.push_back(t);
+  }
+  return out;
+}
+
+// One depth level (G4) and the feeds it runs at: the roughing ones (E30-E33), or the finishing
+// level's (E40: its own S_m1f, S_m2f, n_f; its default plunge feed is S_m1f).
+struct Level {
+  double depth_mm = 0.0;     // d_j
+  double spindle_rpm = 0.0;  // n or n_f
+  double entry_feed = 0.0;   // S_m1,j
+  double steady_feed = 0.0;  // S_m2,j
+  double plunge_feed = 0.0;  // the request's, else S_m1,j
+};
+
+std::vector<Level> levels_of(const entry::MainTimeResult& main_time,
+                             const ProgramOptions& options) {
+  std::vector<Level> out;
+  out.reserve(main_time.depth_passes_mm.size());
+  for (const double depth : main_time.depth_passes_mm) {
+    out.push_back({depth, main_time.spindle_speed_rpm, main_time.entry_feed_mm_per_min,
+                   main_time.feed_mm_per_min,
+                   options.plunge_feed_mm_per_min.value_or(main_time.entry_feed_mm_per_min)});
+  }
+  if (main_time.finish) {
+    const entry::FinishLevel& finish = *main_time.finish;
+    out.back() = {finish.depth_mm, finish.spindle_speed_rpm, finish.entry_feed_mm_per_min,
+                  finish.feed_mm_per_min,
+                  options.plunge_feed_mm_per_min.value_or(finish.entry_feed_mm_per_min)};
   }
   return out;
 }
@@ -65,7 +94,18 @@ std::string header_comment(const entry::MainTimeResult& main_time, std::size_t p
 }  // namespace
 
 std::vector<double> setup_feeds_mm_per_min(const entry::MainTimeResult& main_time) {
-  return {main_time.entry_feed_mm_per_min, main_time.feed_mm_per_min};
+  std::vector<double> feeds = {main_time.entry_feed_mm_per_min, main_time.feed_mm_per_min};
+  if (main_time.finish) {
+    feeds.push_back(main_time.finish->entry_feed_mm_per_min);
+    feeds.push_back(main_time.finish->feed_mm_per_min);
+  }
+  return feeds;
+}
+
+double setup_top_spindle_rpm(const entry::MainTimeResult& main_time) {
+  return main_time.finish
+             ? std::max(main_time.spindle_speed_rpm, main_time.finish->spindle_speed_rpm)
+             : main_time.spindle_speed_rpm;
 }
 
 Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
@@ -74,37 +114,45 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
   const std::vector<Traverse> passes = traverses(params, main_time);
   const std::size_t levels = main_time.depth_passes_mm.size();
   const double blocks =
-      16.0 + 6.0 * static_cast<double>(passes.size()) * static_cast<double>(levels);
+      17.0 + 6.0 * static_cast<double>(passes.size()) * static_cast<double>(levels);
   if (blocks > kMaxProgramBlocks) {
     return make_limit_error(ErrorCode::pass_program_too_large, kMaxProgramBlocks);
   }
 
   const double n = main_time.spindle_speed_rpm;
-  const double s_m1 = main_time.entry_feed_mm_per_min;
-  const double s_m2 = main_time.feed_mm_per_min;
-  const double plunge = options.plunge_feed_mm_per_min.value_or(s_m1);
+  const std::vector<Level> levels_to_cut = levels_of(main_time, options);
   const int decimals = decimals_of(options);
-  for (const double feed : {plunge, s_m1, s_m2}) {
-    if (prints_as_zero(format_fixed(to_program_units(feed, options.units), decimals))) {
-      return make_error(ErrorCode::word_prints_as_zero,
-                        "a feed is too small to print with this many decimals");
+  for (const Level& level : levels_to_cut) {
+    for (const double feed : {level.plunge_feed, level.entry_feed, level.steady_feed}) {
+      if (prints_as_zero(format_fixed(to_program_units(feed, options.units), decimals))) {
+        return make_error(ErrorCode::word_prints_as_zero,
+                          "a feed is too small to print with this many decimals");
+      }
     }
-  }
-  if (prints_as_zero(spindle_text(n, options.dialect, decimals))) {
-    return make_error(ErrorCode::word_prints_as_zero,
-                      "the spindle speed is too small to print with this many decimals");
+    if (prints_as_zero(spindle_text(level.spindle_rpm, options.dialect, decimals))) {
+      return make_error(ErrorCode::word_prints_as_zero,
+                        "the spindle speed is too small to print with this many decimals");
+    }
   }
 
   PassProgram out;
   out.passes = static_cast<int>(passes.size() * levels);
   std::vector<double> feeds = setup_feeds_mm_per_min(main_time);
-  feeds.push_back(plunge);
-  out.warnings = limit_warnings(n, feeds, limits);
-  if (options.dialect == Dialect::fanuc && std::fabs(std::floor(n + 0.5) - n) > 1e-9) {
-    out.warnings.push_back(
-        {WarningCode::spindle_speed_rounded,
-         "a Fanuc S word takes no decimals: S" + spindle_text(n, options.dialect, decimals) +
-             " for n = " + format_fixed(n, 6) + " rpm (feeds and times use the exact n)"});
+  std::vector<double> speeds = {n};
+  for (const Level& level : levels_to_cut) feeds.push_back(level.plunge_feed);
+  if (main_time.finish && main_time.finish->spindle_speed_rpm != n) {
+    speeds.push_back(main_time.finish->spindle_speed_rpm);
+  }
+  out.warnings = limit_warnings(setup_top_spindle_rpm(main_time), feeds, limits);
+  if (options.dialect == Dialect::fanuc) {
+    for (const double rpm : speeds) {
+      if (std::fabs(std::floor(rpm + 0.5) - rpm) > 1e-9) {
+        out.warnings.push_back(
+            {WarningCode::spindle_speed_rounded,
+             "a Fanuc S word takes no decimals: S" + spindle_text(rpm, options.dialect, decimals) +
+                 " for n = " + format_fixed(rpm, 6) + " rpm (feeds and times use the exact n)"});
+      }
+    }
   }
 
   ProgramModel model;
@@ -112,6 +160,9 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
       "CUTCALC PASS PROGRAM", header_comment(main_time, passes.size() * levels, options),
       std::string("PROGRAM UNITS ") + (options.units == Units::inch ? "INCH" : "MM") +
           ", X ALONG THE FEED FROM THE ENTRY EDGE, Y FROM THE SIDE EDGE, Z0 TOP FACE"};
+  if (main_time.finish) {
+    model.comments.push_back("LAST DEPTH LEVEL: FINISHING, AT ITS OWN FEEDS AND SPINDLE SPEED");
+  }
   for (const Warning& warning : out.warnings) {
     model.comments.push_back(comment_text(warning));
   }
@@ -124,10 +175,16 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
 
   double z_level = 0.0;  // Z_(j-1)
   double rapid_mm = 0.0;
-  Axes at;  // where the tool is, after the first G0 X Y
+  double spindle_rpm = n;  // the speed the spindle turns at
+  Axes at;                 // where the tool is, after the first G0 X Y
   bool positioned = false;
-  for (const double depth : main_time.depth_passes_mm) {
-    const double z = z_level - depth;  // G4
+  for (const Level& level : levels_to_cut) {
+    const double z = z_level - level.depth_mm;  // G4
+    if (level.spindle_rpm != spindle_rpm) {
+      // Section 15: the finishing level's own n_f, set at the safe height before its passes.
+      model.blocks.emplace_back(SpeedChange{level.spindle_rpm});
+      spindle_rpm = level.spindle_rpm;
+    }
     for (const Traverse& t : passes) {
       const Axes above{t.x_start_mm, t.y_mm, options.safe_z_mm};
       if (positioned) rapid_mm += distance(at, above);
@@ -136,15 +193,17 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
       const double approach_z = z_level + options.clearance_mm;
       rapid_mm += options.safe_z_mm - approach_z;
       model.blocks.emplace_back(Rapid{{std::nullopt, std::nullopt, approach_z}});
-      model.blocks.emplace_back(Feed{{std::nullopt, std::nullopt, z}, plunge});
-      out.plunge_time_min += (approach_z - z) / plunge;  // G9
-      model.blocks.emplace_back(Feed{{t.x_entry_end_mm, std::nullopt, std::nullopt}, s_m1});
+      model.blocks.emplace_back(Feed{{std::nullopt, std::nullopt, z}, level.plunge_feed});
+      out.plunge_time_min += (approach_z - z) / level.plunge_feed;  // G9
+      model.blocks.emplace_back(
+          Feed{{t.x_entry_end_mm, std::nullopt, std::nullopt}, level.entry_feed});
       const std::string entry_end =
           format_fixed(to_program_units(t.x_entry_end_mm, options.units), decimals);
       const std::string stroke_end =
           format_fixed(to_program_units(t.x_end_mm, options.units), decimals);
       if (stroke_end != entry_end) {
-        model.blocks.emplace_back(Feed{{t.x_end_mm, std::nullopt, std::nullopt}, s_m2});
+        model.blocks.emplace_back(
+            Feed{{t.x_end_mm, std::nullopt, std::nullopt}, level.steady_feed});
       }
       model.blocks.emplace_back(Rapid{{std::nullopt, std::nullopt, options.safe_z_mm}});
       rapid_mm += options.safe_z_mm - z;
@@ -155,11 +214,12 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
   model.blocks.emplace_back(SpindleOff{});
   if (options.coolant != Coolant::off) model.blocks.emplace_back(CoolantOff{});
 
-  // G8: the passes' own feed times, summed over the depth levels, are the main time (E35).
-  for (std::size_t j = 0; j < levels; ++j) {
+  // G8 = E41: the passes' own feed times at each level's feeds, summed over the depth levels, are
+  // the main time.
+  for (const Level& level : levels_to_cut) {
     for (const entry::LateralPass& pass : main_time.lateral_passes) {
-      out.working_time_min +=
-          pass.entry_length_mm / s_m1 + (pass.working_stroke_mm - pass.entry_length_mm) / s_m2;
+      out.working_time_min += pass.entry_length_mm / level.entry_feed +
+                              (pass.working_stroke_mm - pass.entry_length_mm) / level.steady_feed;
     }
   }
   out.rapid_time_min = rapid_mm / options.rapid_mm_per_min;                              // G10

@@ -34,8 +34,12 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
                                        const entry::MainTimeResult& main_time,
                                        const ProgramOptions& options, const MachineLimits& limits);
 
-// The feeds a main-time setup uses (S_m1, S_m2, and the plunge feed when given), for the limit
+// The feeds a main-time setup uses (S_m1, S_m2, the finishing S_m1f and S_m2f; the program adds its
+// plunge feeds), for the limit
 // warnings of section 5.
 std::vector<double> setup_feeds_mm_per_min(const entry::MainTimeResult& main_time);
+
+// The fastest spindle speed a main-time setup uses (n, or the finishing n_f), for the warnings.
+double setup_top_spindle_rpm(const entry::MainTimeResult& main_time);
 
 }  // namespace cutcalc::domain::program

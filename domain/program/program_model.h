@@ -35,13 +35,17 @@ struct Feed {  // G1, F in mm/min
 struct SpindleOn {  // S M3
   double rpm = 0.0;
 };
+struct SpeedChange {  // S alone: a new speed while the spindle turns (the finishing level's n_f)
+  double rpm = 0.0;
+};
 struct SpindleOff {};  // M5
 struct CoolantOn {     // M8 / M7
   Coolant coolant = Coolant::flood;
 };
 struct CoolantOff {};  // M9
 
-using Block = std::variant<SafeStart, Rapid, Feed, SpindleOn, SpindleOff, CoolantOn, CoolantOff>;
+using Block =
+    std::variant<SafeStart, Rapid, Feed, SpindleOn, SpeedChange, SpindleOff, CoolantOn, CoolantOff>;
 
 struct ProgramModel {
   std::vector<std::string> comments;  // the comment block after the name line, warnings last

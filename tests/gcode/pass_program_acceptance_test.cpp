@@ -9,6 +9,9 @@
 //    as the pass's entry_length_mm within 10^-decimals (program units);
 //  - with the same `decimals`, fanuc and sinumerik give the same canonical motion sequence
 //    (STRAIGHT_TRAVERSE, STRAIGHT_FEED, SET_FEED_RATE) as linuxcnc.
+// The same checks run on the section 15 requests (entry-and-main-time.md E37-E41: pass_split
+// equal, a finishing level with its own feeds and speed) of next/main-time.json, in mm and inch:
+// their feed time is their main time.
 
 #include <gtest/gtest.h>
 
@@ -39,6 +42,26 @@ std::vector<json> ok_cases() {
   std::vector<json> cases;
   for (const json& c : file.at("cases")) {
     if (c.at("expect").at("status") == 200) cases.push_back(c);
+  }
+  return cases;
+}
+
+// The 200 cases of next/main-time.json (pass_split, finish) as program cases in `units`: the
+// program's working time must be their main time (G8 = E41).
+std::vector<json> section15_cases(const std::string& units) {
+  std::ifstream in(std::string(CUTCALC_REFERENCE_DIR) + "/next/main-time.json");
+  const json file = json::parse(in);
+  std::vector<json> cases;
+  for (const json& c : file.at("cases")) {
+    if (c.at("expect").at("status") != 200) continue;
+    json request = c.at("request");
+    request.erase("extra_path_mm");  // 0 in every case; a program needs a straight path
+    request["program"] = {{"units", units}};
+    cases.push_back(
+        {{"id", c.at("id").get<std::string>() + " " + units},
+         {"request", request},
+         {"expect",
+          {{"body", {{"working_time_min", c.at("expect").at("body").at("main_time_min")}}}}}});
   }
   return cases;
 }
@@ -161,6 +184,33 @@ TEST(PassProgramAcceptance, EveryReferenceProgramInEveryDialectIsAcceptedAndTime
   ASSERT_GE(cases.size(), 10U);
   for (const json& reference : cases) {
     for (const std::string& dialect : kDialects) check_program(reference, dialect, {}, nullptr);
+  }
+}
+
+TEST(PassProgramAcceptance, EqualPassesAndFinishingLevelsInEveryDialectAndUnitAreTimed) {
+  int checked = 0;
+  for (const std::string units : {"mm", "inch"}) {
+    const auto cases = section15_cases(units);
+    ASSERT_GE(cases.size(), 7U);
+    for (const json& reference : cases) {
+      for (const std::string& dialect : kDialects) {
+        check_program(reference, dialect, {}, nullptr);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GE(checked, 42);
+}
+
+TEST(PassProgramAcceptance, FinishingLevelsGiveTheSameCanonicalMotionInEveryDialect) {
+  for (const json& reference : section15_cases("mm")) {
+    std::vector<std::string> linuxcnc;
+    check_program(reference, "linuxcnc", 4, &linuxcnc);
+    for (const std::string dialect : {"fanuc", "sinumerik"}) {
+      std::vector<std::string> other;
+      check_program(reference, dialect, 4, &other);
+      EXPECT_EQ(other, linuxcnc) << reference.at("id") << " " << dialect;
+    }
   }
 }
 

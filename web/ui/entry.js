@@ -6,6 +6,7 @@ import { RawNumber } from './api.js';
 import { onCalculate } from './calculation.js';
 import { csvButton } from './export.js';
 import {
+  at,
   h,
   noDiagram,
   readBody,
@@ -417,6 +418,9 @@ function exitScheme(scheme, body, container) {
 function timeResults(body) {
   const passes = Array.isArray(body.lateral_passes) ? body.lateral_passes : [];
   const depths = Array.isArray(body.depth_passes_mm) ? body.depth_passes_mm : [];
+  const finish = body.finish && typeof body.finish === 'object' ? body.finish : null;
+  // [key, label, unit, pointer of pass i]: the pass's own member, or (with a finishing level) the
+  // time of its finishing traverse.
   const columns = [
     ['width_mm', [t('result.width'), ' ', ...sym('W', 'i')], 'mm'],
     ['axis_y_mm', [t('result.axis'), ' ', ...sym('Y')], 'mm'],
@@ -426,7 +430,15 @@ function timeResults(body) {
     ['entry_time_min', [t('result.entry_time')], 'min'],
     ['steady_time_min', [t('result.steady_time')], 'min'],
     ['time_min', [t('result.time')], 'min'],
-  ];
+  ].map(([key, label, unit]) => [key, label, unit, (i) => `/lateral_passes/${i}/${key}`]);
+  if (finish) {
+    columns.push([
+      'finish_time_min',
+      [t('result.finishing_time_of_pass'), ' ', ...sym('t', 'i,f')],
+      'min',
+      (i) => `/finish/lateral_passes/${i}/time_min`,
+    ]);
+  }
   const table = h(
     'table',
     {},
@@ -455,8 +467,8 @@ function timeResults(body) {
           'tr',
           {},
           h('th', { scope: 'row' }, String(i + 1)),
-          columns.map(([key, , unit]) =>
-            h('td', {}, value(body, `/lateral_passes/${i}/${key}`, unit, TIME, undefined, true)),
+          columns.map(([, , unit, pointer]) =>
+            h('td', {}, value(body, pointer(i), unit, TIME, undefined, true)),
           ),
         ),
       ),
@@ -499,13 +511,48 @@ function timeResults(body) {
       {},
       t('result.depth_passes'),
       depths.map((_, i) => [i ? ', ' : '', value(body, `/depth_passes_mm/${i}`, 'mm', TIME)]),
+      finish ? t('result.last_is_finishing') : null,
     ),
+    ...(finish ? finishResults(body) : []),
     h('div', { class: 'table-wrap' }, table),
     csvButton(
       'entry-passes-csv',
       'main-time-passes.csv',
       [['pass', ''], ...columns.map(([key, , unit]) => [key, csvUnit(unit)])],
-      passes.map((pass, i) => [i + 1, ...columns.map(([key]) => pass[key])]),
+      passes.map((_, i) => [i + 1, ...columns.map(([, , , pointer]) => at(body, pointer(i)))]),
+    ),
+  ];
+}
+
+// The finishing level of section 15 (E39-E41): its depth, speed, feeds and times.
+function finishResults(body) {
+  return [
+    h('h4', {}, t('result.finishing_level')),
+    valueList(
+      body,
+      [
+        [[t('result.finishing_depth'), ' ', ...sym('t', 'f')], '/finish/depth_mm', 'mm'],
+        [[t('result.finishing_time')], '/finish/time_min', 'min'],
+        [[t('result.at_entry_feed')], '/finish/entry_time_min', 'min'],
+        [[t('result.at_steady_feed')], '/finish/steady_time_min', 'min'],
+        [[t('result.spindle_speed'), ' ', ...sym('n', 'f')], '/finish/spindle_speed_rpm', 'rpm'],
+        [
+          [t('result.feed_per_rev'), ' ', ...sym('S', 'of'), ...iso('f')],
+          '/finish/feed_per_rev_mm',
+          'mm_per_rev',
+        ],
+        [
+          [t('result.feed'), ' ', ...sym('S', 'm2f'), ...iso('v', 'f')],
+          '/finish/feed_mm_per_min',
+          'mm_per_min',
+        ],
+        [
+          [t('result.entry_feed'), ' ', ...sym('S', 'm1f'), ...iso('v', 'f1')],
+          '/finish/entry_feed_mm_per_min',
+          'mm_per_min',
+        ],
+      ],
+      TIME,
     ),
   ];
 }
