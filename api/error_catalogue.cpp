@@ -95,6 +95,11 @@ constexpr std::array kCatalogue{
     Entry{ErrorCode::word_prints_as_zero,
           "a feed or the spindle speed is too small to print with this many decimals",
           "подача или частота вращения слишком малы для вывода с таким числом знаков"},
+    Entry{ErrorCode::target_cusp_unreachable,
+          "the target cusp height is not reached: the largest feed the model accepts for this bore "
+          "and cutter leaves {maximum} um",
+          "заданная высота гребня не достигается: наибольшая допустимая для модели подача при этих "
+          "отверстии и фрезе оставляет {maximum} мкм"},
     Entry{ErrorCode::required, "is required", "обязательное поле"},
     Entry{ErrorCode::required_choice, "is required (one of: {allowed})",
           "обязательное поле (одно из: {allowed})"},
