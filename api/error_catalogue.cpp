@@ -100,6 +100,11 @@ constexpr std::array kCatalogue{
           "roughing level)",
           "глубина чистового прохода должна быть меньше припуска по глубине (хотя бы один "
           "черновой проход)"},
+    Entry{ErrorCode::target_cusp_unreachable,
+          "the target cusp height is not reached: the largest feed the model accepts for this bore "
+          "and cutter leaves {maximum} um",
+          "заданная высота гребня не достигается: наибольшая допустимая для модели подача при этих "
+          "отверстии и фрезе оставляет {maximum} мкм"},
     Entry{ErrorCode::required, "is required", "обязательное поле"},
     Entry{ErrorCode::required_choice, "is required (one of: {allowed})",
           "обязательное поле (одно из: {allowed})"},

@@ -43,6 +43,7 @@ std::span<const CalculationRoute> calculation_routes() {
           .page_section = "groove"},
       CalculationRoute{.path = "/v1/roughness/bore-milling",
                        .handler = &roughness::handle_bore_milling,
+                       .plot = {"curve_points", "121", ""},
                        .reference_files = {"roughness-bore-milling.json"},
                        .page_section = "bore"},
       CalculationRoute{.path = "/v1/polygon-hole/gcode",

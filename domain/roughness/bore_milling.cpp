@@ -38,20 +38,17 @@ double cusp_height_mm(double R, double Rc, double r, double delta_star) {
   return R * q_over_R2 / (1.0 + std::sqrt(std::max(1.0 - q_over_R2, 0.0)));
 }
 
-}  // namespace
+// What B.4 steps 2-4 establish for an accepted feed: the path and the bracket [0, hi] of its root.
+struct RootBracket {
+  detail::PlanetaryPath path;
+  double k = 0.0;           // k (B3)
+  double half_alpha = 0.0;  // alpha/2 (B3)
+  double s = 0.0;           // s (B6)
+  double hi = 0.0;          // hi (B7)
+};
 
-// B1-B8, B.4
-Result<BoreMillingResult> compute_bore_milling_cusp(const BoreMillingParams& params) {
-  const double R = params.bore_radius_mm;                            // R
-  const double r = params.cutter_radius_mm;                          // r
-  const double n = static_cast<double>(params.teeth);                // n
-  const double S = params.feed_per_rev_mm;                           // S_n
-  const double m = params.milling == MillingSense::up ? 1.0 : -1.0;  // m
-
-  // B.4 step 1
-  if (!(r < R)) {
-    return make_error(ErrorCode::cutter_not_smaller_than_bore);
-  }
+// B.4 steps 2-4 for R > r: the bracket of the root, or why the feed is too large.
+Result<RootBracket> bracket_root(double R, double r, double n, double S, double m) {
   const double Rc = R - r;               // Rc (B1)
   const double eps = orbit_rate(S, Rc);  // eps (B1)
 
@@ -88,6 +85,42 @@ Result<BoreMillingResult> compute_bore_milling_cusp(const BoreMillingParams& par
         "the feed per tooth is too large for this cutter: adjacent tooth paths do not meet within "
         "90 degrees of tooth rotation");
   }
+  return RootBracket{path, k, half_alpha, s, hi};
+}
+
+double milling_sign(MillingSense milling) { return milling == MillingSense::up ? 1.0 : -1.0; }
+
+}  // namespace
+
+// B.4 steps 1-4
+bool bore_milling_feed_accepted(const BoreMillingParams& params) {
+  return params.cutter_radius_mm < params.bore_radius_mm &&
+         bracket_root(params.bore_radius_mm, params.cutter_radius_mm,
+                      static_cast<double>(params.teeth), params.feed_per_rev_mm,
+                      milling_sign(params.milling))
+             .ok();
+}
+
+// B1-B8, B.4
+Result<BoreMillingResult> compute_bore_milling_cusp(const BoreMillingParams& params) {
+  const double R = params.bore_radius_mm;              // R
+  const double r = params.cutter_radius_mm;            // r
+  const double n = static_cast<double>(params.teeth);  // n
+  const double S = params.feed_per_rev_mm;             // S_n
+  const double m = milling_sign(params.milling);       // m
+
+  // B.4 step 1
+  if (!(r < R)) {
+    return make_error(ErrorCode::cutter_not_smaller_than_bore);
+  }
+  const double Rc = R - r;  // Rc (B1)
+
+  // B.4 steps 2-4
+  const auto bracket = bracket_root(R, r, n, S, m);
+  if (!bracket.ok()) {
+    return bracket.error();
+  }
+  const auto& [path, k, half_alpha, s, hi] = bracket.value();
 
   // B.4 step 5
   const std::optional<detail::BisectorCrossing> root =

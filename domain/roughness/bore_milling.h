@@ -29,4 +29,8 @@ struct BoreMillingResult {
 // not_converged (a bug: the bracketed root search did not finish).
 Result<BoreMillingResult> compute_bore_milling_cusp(const BoreMillingParams& params);
 
+// B.4 steps 1-4 alone: whether the model accepts this bore, cutter, teeth, sense and feed (the
+// predicate of B10).
+bool bore_milling_feed_accepted(const BoreMillingParams& params);
+
 }  // namespace cutcalc::domain::roughness

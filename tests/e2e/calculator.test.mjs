@@ -121,11 +121,16 @@ const SECTIONS = [
   },
   {
     id: 'bore',
-    file: 'roughness-bore-milling.json',
+    file: 'next/roughness-bore-milling.json',
     tolerance: c => absOrRel(c.tolerance),
+    // With a target the page also shows the largest feed, and the plot the target and that feed.
+    prefer: c => (c.request.target_cusp_um !== undefined ? 0 : 1),
     endpoints: { main: '/v1/roughness/bore-milling' },
-    shown: { main: ['/cusp_height_um'] },
-    diagrams: {},
+    shown: { main: ['/cusp_height_um', '/max_feed_per_rev_mm'] },
+    diagrams: { 'cusp-vs-feed': ['curve', 'feed-marker'] },
+    targetField: 'target_cusp_um',
+    targetDiagram: 'cusp-vs-feed',
+    targetDiagramRoles: ['target-line', 'max-feed-line'],
   },
   {
     id: 'polygon',
@@ -883,8 +888,9 @@ describe('calculator page at 1280 px', () => {
 
       // Diagrams.
       const diagrams = { ...section.diagrams };
-      if (section.targetDiagramRoles && kase.request.target_rz_um !== undefined) {
-        diagrams['rz-vs-feed'] = [...diagrams['rz-vs-feed'], ...section.targetDiagramRoles];
+      const targetDiagram = section.targetDiagram ?? 'rz-vs-feed';
+      if (section.targetDiagramRoles && kase.request[section.targetField ?? 'target_rz_um'] !== undefined) {
+        diagrams[targetDiagram] = [...diagrams[targetDiagram], ...section.targetDiagramRoles];
       }
       const drawn = await checkDiagrams(page, section, diagrams);
       if (section.id === 'entry') {

@@ -1,16 +1,24 @@
-// Bore milling roughness (paper 001): the cusp between adjacent tooth paths.
+// Bore milling roughness (paper 001): the cusp between adjacent tooth paths and, with a target,
+// the largest feed; the plot of the cusp against the feed comes from the same request
+// (curve_points).
 
 import { boreDiagrams } from './bore_diagram.js';
+import { CURVE_COLUMNS, cuspPlot } from './bore_curve.js';
 import { onCalculate } from './calculation.js';
-import { h, readBody, showFailure, sym, valueList } from './form.js';
+import { csvButton } from './export.js';
+import { h, iso, noDiagram, readBody, showFailure, sym, valueList } from './form.js';
 import { t } from './i18n.js';
+import { csvUnit } from './units.js';
+
+const PATH = '/v1/roughness/bore-milling';
+const CURVE_POINTS = 200;
 
 export function init() {
   const form = document.getElementById('bore-form');
   const result = document.getElementById('bore-result');
   return onCalculate(form, async (api) => {
     const body = readBody(form);
-    const answer = await api.postJson('/v1/roughness/bore-milling', body);
+    const answer = await api.postJson(PATH, { ...body, curve_points: CURVE_POINTS });
     result.replaceChildren();
     if (!answer.ok) {
       showFailure(form, answer);
@@ -46,6 +54,11 @@ export function init() {
           'mm_per_tooth',
         ],
         [[t('result.pitch_angle'), ' ', ...sym('\u03b1')], '/pitch_angle_deg', 'deg'],
+        [
+          [t('result.bore_largest_feed'), ' ', ...sym('S', 'max'), ...iso('f', 'max')],
+          '/max_feed_per_rev_mm',
+          'mm_per_rev',
+        ],
       ]),
       h(
         'p',
@@ -63,5 +76,19 @@ export function init() {
         result,
       ),
     );
+    const response = answer.json;
+    if (Array.isArray(response.curve) && response.curve.length >= 2) {
+      result.append(
+        cuspPlot(response, Number(body.feed_per_rev_mm?.text), Number(body.target_cusp_um?.text)),
+        csvButton(
+          'bore-curve-csv',
+          'bore-milling-cusp-curve.csv',
+          CURVE_COLUMNS.map(([key, unit]) => [key, csvUnit(unit)]),
+          response.curve.map((point) => CURVE_COLUMNS.map(([key]) => point[key])),
+        ),
+      );
+    } else {
+      result.append(noDiagram(t('result.no_curve')));
+    }
   });
 }
