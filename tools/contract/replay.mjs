@@ -6,7 +6,7 @@
 // errors[] naming expect.pointer, as application/problem+json; the program facts of
 // expect.program: loops, layers, z_min, g95_flat_F, g94_F, last_C) and every answer, success or
 // problem, against openapi.yaml (contract.mjs: Ajv, JSON Schema 2020-12; status, media type,
-// headers, body). A case listed in reference-corrections.mjs (a request that contradicts the spec
+// headers, body). A case listed in tests/reference-corrections.json (a request that contradicts the spec
 // it cites) is replayed with its corrected request, said in the output. rs274 acceptance of the programs (expect.program.rs274) is tests/gcode's.
 //
 // Where cutcalc is:
@@ -134,7 +134,7 @@ function referenceCases() {
   const firstValid = {};
   for (const file of files) {
     const doc = JSON.parse(readFileSync(path.join(REFERENCE_DIR, file), 'utf8'));
-    doc.cases = correctedCases(file, doc.cases ?? [], why => setupError(`STALE reference correction: ${why} (tools/contract/reference-corrections.mjs)`));
+    doc.cases = correctedCases(file, doc.cases ?? [], why => setupError(`STALE reference correction: ${why} (tests/reference-corrections.json)`));
     for (const c of doc.cases) if (c.correction) console.log(`replay: ${file}:${c.id} replayed with a corrected request: ${c.correction}`);
     const chosen = pick(doc.cases);
     if (chosen.length === 0) setupError(`${file} has no cases`);
