@@ -6,6 +6,7 @@
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
 #include "api/milling_sense_json.h"
+#include "api/roughness/sample_fields.h"
 #include "domain/roughness/bore_milling.h"
 #include "domain/roughness/bore_milling_curve.h"
 #include "domain/roughness/bore_milling_feed.h"
@@ -14,13 +15,6 @@ namespace cutcalc::api::roughness {
 namespace {
 
 namespace model = domain::roughness;
-
-// Cusp targets up to 1 km in micrometres, as the groove wall's Rz targets: no meaningful surface
-// is rougher.
-constexpr double kMaxTargetUm = 1.0e9;
-// curve_points: a line needs two points; 1000 is finer than any plot.
-constexpr std::int64_t kMinCurvePoints = 2;
-constexpr std::int64_t kMaxCurvePoints = 1000;
 
 // bore_feed_too_large is about the combination of the feed, teeth, radii and sense,
 // target_cusp_unreachable about the target together with the whole setup.
@@ -51,11 +45,7 @@ HandlerOutcome handle_bore_milling(const nlohmann::json& body) {
   params.milling = read_milling(in).value_or(domain::MillingSense::up);
   const std::optional<double> target_cusp_um =
       in.optional_number("target_cusp_um", Bounds::positive(kMaxTargetUm));
-  std::optional<int> curve_points;
-  if (in.has("curve_points")) {
-    curve_points = static_cast<int>(
-        in.required_integer("curve_points", kMinCurvePoints, kMaxCurvePoints).value_or(0));
-  }
+  const std::optional<int> curve_points = optional_sample_count(in, "curve_points");
   in.reject_unknown_fields();
   if (!errors.empty()) {
     return invalid_input(std::move(errors));

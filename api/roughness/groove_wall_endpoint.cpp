@@ -6,6 +6,7 @@
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "api/roughness/sample_fields.h"
 #include "domain/roughness/groove_wall.h"
 #include "domain/roughness/groove_wall_bearing.h"
 #include "domain/roughness/groove_wall_curve.h"
@@ -14,12 +15,6 @@ namespace cutcalc::api::roughness {
 namespace {
 
 namespace model = domain::roughness;
-
-// Rz targets up to 1 km in micrometres: no meaningful surface is rougher.
-constexpr double kMaxTargetUm = 1.0e9;
-// curve_points and bearing_points: a line needs two points; 1000 is finer than any plot.
-constexpr std::int64_t kMinCurvePoints = 2;
-constexpr std::int64_t kMaxCurvePoints = 1000;
 
 const char* to_string(model::CrestBranch branch) {
   switch (branch) {
@@ -61,16 +56,8 @@ HandlerOutcome handle_groove_wall(const nlohmann::json& body) {
   params.minor_edge_angle_deg =
       in.required_number("minor_edge_angle_deg", Bounds{0.0, true, 90.0, false, {}}).value_or(0.0);
   params.target_rz_um = in.optional_number("target_rz_um", Bounds::positive(kMaxTargetUm));
-  std::optional<int> curve_points;
-  if (in.has("curve_points")) {
-    curve_points = static_cast<int>(
-        in.required_integer("curve_points", kMinCurvePoints, kMaxCurvePoints).value_or(0));
-  }
-  std::optional<int> bearing_points;
-  if (in.has("bearing_points")) {
-    bearing_points = static_cast<int>(
-        in.required_integer("bearing_points", kMinCurvePoints, kMaxCurvePoints).value_or(0));
-  }
+  const std::optional<int> curve_points = optional_sample_count(in, "curve_points");
+  const std::optional<int> bearing_points = optional_sample_count(in, "bearing_points");
   in.reject_unknown_fields();
   if (!errors.empty()) {
     return invalid_input(std::move(errors));

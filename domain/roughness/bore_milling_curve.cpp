@@ -7,17 +7,9 @@
 #include <cstddef>
 
 #include "domain/roughness/bore_milling_feed.h"
+#include "domain/roughness/curve_feed_range.h"
 
 namespace cutcalc::domain::roughness {
-
-namespace {
-
-// The range shows the requested feed with room to its right and, with a target, the largest feed
-// S(T) a quarter beyond it, as the groove-wall curve does; never beyond what the model accepts.
-constexpr double kFeedMargin = 1.5;      // S_max >= 1.5 S
-constexpr double kMaxFeedMargin = 1.25;  // S_max >= 1.25 S(T)
-
-}  // namespace
 
 // B13
 Result<BoreMillingCurve> compute_bore_milling_curve(const BoreMillingCurveParams& params) {
@@ -27,11 +19,10 @@ Result<BoreMillingCurve> compute_bore_milling_curve(const BoreMillingCurveParams
     return at_feed.error();
   }
   BoreMillingCurve curve;
-  curve.feed_max_mm = kFeedMargin * params.bore.feed_per_rev_mm;
-  if (params.max_feed_per_rev_mm) {
-    curve.feed_max_mm = std::max(curve.feed_max_mm, kMaxFeedMargin * *params.max_feed_per_rev_mm);
-  }
-  curve.feed_max_mm = std::min(curve.feed_max_mm, bore_milling_feed_limit_mm(params.bore));
+  // Never beyond what the model accepts (S_lim, B10).
+  curve.feed_max_mm =
+      std::min(detail::curve_feed_max_mm(params.bore.feed_per_rev_mm, params.max_feed_per_rev_mm),
+               bore_milling_feed_limit_mm(params.bore));
 
   const int k = std::max(params.points, 1);
   curve.points.reserve(static_cast<std::size_t>(k));

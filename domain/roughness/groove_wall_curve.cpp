@@ -8,16 +8,9 @@
 #include <cstddef>
 #include <optional>
 
+#include "domain/roughness/curve_feed_range.h"
+
 namespace cutcalc::domain::roughness {
-
-namespace {
-
-// The range shows the requested feed with room to its right and, with a target, the largest
-// feed S(T) a quarter beyond it.
-constexpr double kFeedMargin = 1.5;      // S_max >= 1.5 S
-constexpr double kMaxFeedMargin = 1.25;  // S_max >= 1.25 S(T)
-
-}  // namespace
 
 Result<GrooveWallCurve> compute_groove_wall_curve(const GrooveWallCurveParams& params) {
   // R1-R8 at the request's own feed: its errors are the curve's, and R8 gives S(T).
@@ -26,10 +19,7 @@ Result<GrooveWallCurve> compute_groove_wall_curve(const GrooveWallCurveParams& p
     return at_feed.error();
   }
   GrooveWallCurve curve;
-  curve.feed_max_mm = kFeedMargin * params.groove.feed_mm;  // S_max
-  if (const auto& max_feed = at_feed.value().max_feed_mm) {
-    curve.feed_max_mm = std::max(curve.feed_max_mm, kMaxFeedMargin * *max_feed);
-  }
+  curve.feed_max_mm = detail::curve_feed_max_mm(params.groove.feed_mm, at_feed.value().max_feed_mm);
   if (!std::isfinite(curve.feed_max_mm)) {
     return make_error(ErrorCode::target_needs_minor_edge_angle,
                       "the minor edge angle is too small for this target crest height: the feed "

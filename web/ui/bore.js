@@ -3,15 +3,22 @@
 // (curve_points).
 
 import { boreDiagrams } from './bore_diagram.js';
-import { CURVE_COLUMNS, cuspPlot } from './bore_curve.js';
+import { feedCurvePlot } from './feed_curve.js';
 import { onCalculate } from './calculation.js';
 import { csvButton } from './export.js';
-import { h, iso, noDiagram, readBody, showFailure, sym, valueList } from './form.js';
+import { at, h, iso, noDiagram, readBody, showFailure, sym, valueList } from './form.js';
 import { t } from './i18n.js';
-import { csvUnit } from './units.js';
+import { s } from './svg.js';
+import { csvUnit, fromApi, unitText } from './units.js';
 
 const PATH = '/v1/roughness/bore-milling';
 const CURVE_POINTS = 200;
+// The curve's fields (the answer's curve[] items) and API units, for its CSV.
+const CURVE_COLUMNS = [
+  ['feed_per_rev_mm', 'mm_per_rev'],
+  ['cusp_height_um', 'um'],
+];
+const DELTA = '\u0394';
 
 export function init() {
   const form = document.getElementById('bore-form');
@@ -90,5 +97,24 @@ export function init() {
     } else {
       result.append(noDiagram(t('result.no_curve')));
     }
+  });
+}
+
+// The cusp against the feed (B13), with a target the target line and the largest feed (B12).
+function cuspPlot(response, feedMm, target) {
+  const hasTarget = at(response, '/max_feed_per_rev_mm') !== undefined && Number.isFinite(target);
+  return feedCurvePlot({
+    kind: 'cusp-vs-feed',
+    title: t('diagram.bore_curve_title'),
+    xLabel: t('diagram.bore_feed_axis', { unit: unitText('mm_per_rev') }),
+    yLabel: [DELTA, s('tspan', {}, `, ${unitText('um')}`)],
+    curveLabel: `${DELTA}(S)`,
+    feedUnit: 'mm_per_rev',
+    curve: response.curve.map((p) => [fromApi(p.feed_per_rev_mm, 'mm_per_rev'), p.cusp_height_um]),
+    feed: fromApi(feedMm, 'mm_per_rev'),
+    height: response.cusp_height_um,
+    target: hasTarget
+      ? { height: target, maxFeed: fromApi(response.max_feed_per_rev_mm, 'mm_per_rev') }
+      : null,
   });
 }

@@ -4,9 +4,9 @@
 
 import { onCalculate } from './calculation.js';
 import { csvButton } from './export.js';
+import { feedCurvePlot } from './feed_curve.js';
 import {
   at,
-  fmt,
   h,
   noDiagram,
   readBody,
@@ -120,15 +120,8 @@ function bearingPlot(response) {
 
 // The feed (x) in the page's units: the curve keeps its shape, its axis reads in mm or inches.
 function rzPlot(response, feedMm, target) {
-  const feed = fromApi(feedMm, 'mm');
-  const curve = response.curve.map((p) => [fromApi(p.feed_mm, 'mm'), p.rz_um]);
   const hasTarget = at(response, '/max_feed_mm') !== undefined && Number.isFinite(target);
-  const ys = curve
-    .map((p) => p[1])
-    .concat(hasTarget ? [target] : [])
-    .concat([response.rz_um]);
-  const xs = curve.map((p) => p[0]).concat([feed]);
-  const chart = plot({
+  return feedCurvePlot({
     kind: 'rz-vs-feed',
     title: t('diagram.rz_plot_title'),
     xLabel: t('diagram.feed_axis', { unit: unitText('mm') }),
@@ -137,68 +130,11 @@ function rzPlot(response, feedMm, target) {
       s('tspan', { 'baseline-shift': 'sub', 'font-size': '0.75em' }, 'p'),
       s('tspan', {}, `, ${unitText('um')}`),
     ],
-    xDomain: domain(xs, 0.02, true),
-    yDomain: domain(ys, 0.08, true),
+    curveLabel: 'Rz(S)',
+    feedUnit: 'mm',
+    curve: response.curve.map((p) => [fromApi(p.feed_mm, 'mm'), p.rz_um]),
+    feed: fromApi(feedMm, 'mm'),
+    height: response.rz_um,
+    target: hasTarget ? { height: target, maxFeed: fromApi(response.max_feed_mm, 'mm') } : null,
   });
-  const { x, y, area } = chart;
-  chart.layer.append(
-    s('polyline', {
-      'data-role': 'curve',
-      class: 's-curve',
-      points: points(curve.map(([f, rz]) => [x(f), y(rz)])),
-    }),
-  );
-  const legend = [{ cls: 's-curve', label: 'Rz(S)' }];
-  if (hasTarget) {
-    chart.layer.append(
-      s(
-        'g',
-        { 'data-role': 'target-line' },
-        s('line', {
-          class: 's-target',
-          x1: area.left,
-          y1: y(target),
-          x2: area.right,
-          y2: y(target),
-        }),
-        s(
-          'text',
-          { x: area.left + 4, y: y(target), dy: '-0.4em' },
-          `T = ${fmt(target)} ${unitText('um')}`,
-        ),
-      ),
-    );
-    const maxFeed = fromApi(response.max_feed_mm, 'mm');
-    chart.layer.append(
-      s(
-        'g',
-        { 'data-role': 'max-feed-line' },
-        s('line', {
-          class: 's-max-feed',
-          x1: x(maxFeed),
-          y1: area.top,
-          x2: x(maxFeed),
-          y2: area.bottom,
-        }),
-        s(
-          'text',
-          { x: x(maxFeed), y: area.top, dx: '-0.3em', dy: '1em', 'text-anchor': 'end' },
-          `S max = ${fmt(maxFeed)} ${unitText('mm')}`,
-        ),
-      ),
-    );
-    legend.push(
-      { cls: 's-target', label: t('legend.target') },
-      { cls: 's-max-feed', label: t('legend.largest_feed') },
-    );
-  }
-  chart.svg.append(
-    s(
-      'g',
-      { 'data-role': 'feed-marker' },
-      s('circle', { class: 's-marker', cx: x(feed), cy: y(response.rz_um), r: 5 }),
-    ),
-  );
-  legend.push({ cls: 's-marker', label: t('legend.this_feed'), shape: 'dot' });
-  return figure(chart.svg, legend);
 }
