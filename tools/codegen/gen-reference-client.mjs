@@ -14,7 +14,8 @@
 //     Every 422 case is sent (tsc still emits JavaScript for the suppressed lines) and must be
 //     answered 422 application/problem+json with errors[] naming expect.pointer.
 // Everything comes from openapi.yaml and the reference files at run time: each file's `endpoint`
-// (as tools/contract/replay.mjs reads it) and its cases. Nothing here is per case.
+// (as tools/contract/replay.mjs reads it) and its cases, with the request corrections of
+// tests/reference-corrections.json applied. Nothing here is per case.
 //
 // Usage: node gen-reference-client.mjs --openapi FILE --reference DIR [--routes FILE] --out DIR
 // DIR's *.json plus the next/ files the route table lists (--routes: what `cutcalc --routes`
@@ -26,6 +27,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import YAML from 'yaml';
+import { correctedCases } from '../contract/reference-corrections.mjs';
 import { loadRoutes, replayedReferenceFiles } from '../routes/route_table.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -197,6 +199,8 @@ const ruleProblems = [];
 
 for (const file of files) {
   const doc = JSON.parse(readFileSync(path.join(args.reference, file), 'utf8'));
+  // The requests that contradict the spec they cite, corrected as the replay corrects them.
+  doc.cases = correctedCases(file, doc.cases ?? [], why => die(`STALE reference correction: ${why}`));
   const endpoint = doc.endpoint;
   if (typeof endpoint !== 'string') die(`${file} names no endpoint`);
   const schema = requestSchema(endpoint);
