@@ -22,4 +22,12 @@ JsonReply post_ok(const std::string& path, const nlohmann::json& request) {
   return reply;
 }
 
+void expect_conforms(const std::string& path, const JsonReply& reply) {
+  for (const auto& violation : test_support::project_contract().check_response(
+           "post", path, reply.status, reply.content_type, reply.json)) {
+    ADD_FAILURE() << "response breaks openapi.yaml: " << violation
+                  << "\nresponse: " << reply.body.substr(0, 400);
+  }
+}
+
 }  // namespace cutcalc::testing

@@ -20,4 +20,8 @@ namespace cutcalc::testing {
 // with every other logged exchange, support/exchange_log.h).
 JsonReply post_ok(const std::string& path, const nlohmann::json& request);
 
+// Fails the running test, here and now, for each way the answer to a POST to `path` breaks
+// openapi.yaml (the logged exchanges are checked again after all tests).
+void expect_conforms(const std::string& path, const JsonReply& reply);
+
 }  // namespace cutcalc::testing

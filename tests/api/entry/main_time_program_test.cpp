@@ -123,10 +123,7 @@ void expect_problem_at(const json& request, const std::string& pointer) {
   const JsonReply reply = post(kPath, request.dump());
   EXPECT_EQ(reply.status, 422) << reply.body;
   EXPECT_TRUE(problem_names_pointer(reply.json, pointer)) << pointer << ": " << reply.body;
-  for (const auto& violation : test_support::project_contract().check_response(
-           "post", kPath, reply.status, reply.content_type, reply.json)) {
-    ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
-  }
+  expect_conforms(kPath, reply);
 }
 
 TEST(MainTimeProgram, RefusesWhatSection6Refuses) {
@@ -195,10 +192,7 @@ TEST(MainTimeProgram, ExtraPathIsAFieldErrorListedWithTheOthers) {
   EXPECT_EQ(only.json.at("errors")[0].at("pointer"), "/extra_path_mm");
   EXPECT_EQ(only.json.at("errors")[0].at("code"), "program_needs_straight_path");
   EXPECT_EQ(only.json.at("detail"), "extra_path_mm must be 0 (a program needs a straight path)");
-  for (const auto& violation : test_support::project_contract().check_response(
-           "post", kPath, reply.status, reply.content_type, reply.json)) {
-    ADD_FAILURE() << "response breaks openapi.yaml: " << violation;
-  }
+  expect_conforms(kPath, reply);
 }
 
 }  // namespace
