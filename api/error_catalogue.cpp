@@ -93,8 +93,10 @@ constexpr std::array kCatalogue{
     Entry{ErrorCode::pass_program_too_large, "the program would have more than {maximum} blocks",
           "программа содержала бы более {maximum} кадров"},
     Entry{ErrorCode::word_prints_as_zero,
-          "a feed or the spindle speed is too small to print with this many decimals",
-          "подача или частота вращения слишком малы для вывода с таким числом знаков"},
+          "a feed, the spindle speed, its limit or a dwell is too small to print with this many "
+          "decimals",
+          "подача, частота вращения, её предел или выдержка слишком малы для вывода с таким "
+          "числом знаков"},
     Entry{ErrorCode::finish_depth_not_below_depth,
           "the finishing depth of cut must be less than the depth allowance (at least one "
           "roughing level)",
@@ -105,6 +107,31 @@ constexpr std::array kCatalogue{
           "and cutter leaves {maximum} um",
           "заданная высота гребня не достигается: наибольшая допустимая для модели подача при этих "
           "отверстии и фрезе оставляет {maximum} мкм"},
+    Entry{ErrorCode::bottom_not_below_start, "the bottom diameter must be below the start diameter",
+          "диаметр дна канавки должен быть меньше начального диаметра"},
+    Entry{ErrorCode::groove_too_deep,
+          "the groove depth must be less than the start radius (2 groove_depth_mm < "
+          "start_diameter_mm)",
+          "глубина канавки должна быть меньше начального радиуса (2 groove_depth_mm < "
+          "start_diameter_mm)"},
+    Entry{ErrorCode::shift_too_wide, "the shift must be narrower than the groove",
+          "смещение должно быть меньше ширины канавки"},
+    Entry{ErrorCode::tool_too_wide, "the tool must be narrower than the groove",
+          "резец должен быть уже канавки"},
+    Entry{ErrorCode::tool_and_shift_mismatch,
+          "tool_width_mm + shift_mm must equal groove_width_mm: give one of them or both matching",
+          "tool_width_mm + shift_mm должно равняться groove_width_mm: задайте одно из них или оба "
+          "согласованно"},
+    Entry{ErrorCode::tool_not_wider_than_shift,
+          "the tool must be wider than the shift (tool_width_mm > shift_mm): a narrower tool "
+          "leaves a ridge in the groove bottom",
+          "резец должен быть шире смещения (tool_width_mm > shift_mm): более узкий резец оставит "
+          "гребень на дне канавки"},
+    Entry{ErrorCode::too_many_revolutions,
+          "the cycle would take more than {maximum} revolutions (one program block each): use a "
+          "larger feed_per_rev_mm",
+          "цикл занял бы более {maximum} оборотов (по кадру программы на каждый): увеличьте "
+          "feed_per_rev_mm"},
     Entry{ErrorCode::required, "is required", "обязательное поле"},
     Entry{ErrorCode::required_choice, "is required (one of: {allowed})",
           "обязательное поле (одно из: {allowed})"},

@@ -6,6 +6,7 @@
 #include "api/entry/entry_length_endpoint.h"
 #include "api/entry/main_time_endpoint.h"
 #include "api/entry/main_time_program_endpoint.h"
+#include "api/grooving/grooving_cycle_endpoint.h"
 #include "api/kinematics/resultant_speeds_endpoint.h"
 #include "api/polygon/polygon_hole_endpoint.h"
 #include "api/roughness/bore_milling_endpoint.h"
@@ -53,6 +54,10 @@ std::span<const CalculationRoute> calculation_routes() {
                        .plot = {"include_geometry", "true", ""},
                        .reference_files = {"polygon-hole.json", "next/polygon-hole.json"},
                        .page_section = "polygon"},
+      CalculationRoute{.path = "/v1/grooving/cycle",
+                       .handler = &grooving::handle_grooving_cycle,
+                       .forms = json_and_plain_text_program,
+                       .reference_files = {"next/grooving-cycle.json"}},
   };
   return routes;
 }

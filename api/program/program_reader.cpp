@@ -66,14 +66,19 @@ void read_identity(ObjectReader& in, model::ProgramOptions& options) {
   }
 }
 
-void read_tool_and_machine_state(ObjectReader& in, model::ProgramOptions& options) {
+void read_tool_and_machine_state(ObjectReader& in, ProgramKind kind,
+                                 model::ProgramOptions& options) {
+  const bool lathe = kind == ProgramKind::lathe;
   if (in.has("tool_number")) {
-    options.tool_number =
-        static_cast<int>(in.required_integer("tool_number", 1, model::kMaxToolNumber).value_or(1));
+    options.tool_number = static_cast<int>(
+        in.required_integer("tool_number", 1, lathe ? model::kMaxTurretTool : model::kMaxToolNumber)
+            .value_or(1));
   }
-  options.tool_length_offset = in.boolean_or("tool_length_offset", false);
-  if (options.tool_length_offset && !in.has("tool_number")) {
-    in.add_error("tool_length_offset", ErrorCode::requires_field, {{"field", "tool_number"}});
+  if (!lathe) {
+    options.tool_length_offset = in.boolean_or("tool_length_offset", false);
+    if (options.tool_length_offset && !in.has("tool_number")) {
+      in.add_error("tool_length_offset", ErrorCode::requires_field, {{"field", "tool_number"}});
+    }
   }
   if (const auto offset =
           in.optional_choice("work_offset", {"G54", "G55", "G56", "G57", "G58", "G59"})) {
@@ -91,6 +96,7 @@ void read_tool_and_machine_state(ObjectReader& in, model::ProgramOptions& option
 }
 
 void read_motion(ObjectReader& in, ProgramKind kind, model::ProgramOptions& options) {
+  if (kind == ProgramKind::lathe) return;
   options.safe_z_mm =
       in.number_or("safe_z_mm", Bounds::positive(),
                    kind == ProgramKind::polygon ? domain::polygon::PolygonHoleParams{}.safe_z_mm
@@ -119,7 +125,7 @@ model::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind)
   options.units =
       in.optional_choice("units", {"mm", "inch"}) == "inch" ? model::Units::inch : model::Units::mm;
   read_identity(in, options);
-  read_tool_and_machine_state(in, options);
+  read_tool_and_machine_state(in, kind, options);
   read_motion(in, kind, options);
   in.reject_unknown_fields();
   return options;

@@ -15,6 +15,8 @@ namespace cutcalc::api::program {
 enum class ProgramKind {
   pass_program,  // POST /v1/main-time/program: every member
   polygon,       // POST /v1/polygon-hole/gcode: no clearance, plunge feed or rapid rate
+  lathe,         // lathe programs (grooving-cycle.md 2): tools 1..99 on a turret, no length
+                 // offset word, no safe Z or clearance
 };
 
 // The `program` object of `root` (absent: every default of `kind`).

@@ -6,6 +6,7 @@
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "api/roughness/crest_branch_json.h"
 #include "api/roughness/sample_fields.h"
 #include "domain/roughness/groove_wall.h"
 #include "domain/roughness/groove_wall_bearing.h"
@@ -15,18 +16,6 @@ namespace cutcalc::api::roughness {
 namespace {
 
 namespace model = domain::roughness;
-
-const char* to_string(model::CrestBranch branch) {
-  switch (branch) {
-    case model::CrestBranch::nose_arc:
-      return "nose_arc";
-    case model::CrestBranch::nose_arc_and_minor_edge:
-      return "nose_arc_and_minor_edge";
-    case model::CrestBranch::minor_edge_and_main_edge:
-      break;
-  }
-  return "minor_edge_and_main_edge";
-}
 
 nlohmann::json to_json(const model::GrooveWallCurve& curve) {
   nlohmann::json points = nlohmann::json::array();

@@ -117,31 +117,46 @@ std::string comment_line(std::string_view text, Dialect dialect) {
 
 }  // namespace
 
-std::string program_header(const std::vector<std::string>& comments,
-                           const ProgramOptions& options) {
-  const bool inch = options.units == Units::inch;
+std::string program_start(const std::vector<std::string>& comments, const ProgramOptions& options) {
   std::string out;
   switch (options.dialect) {
     case Dialect::linuxcnc:
       out = cat({"%\n(", options.name, ")\n"});
-      for (const auto& text : comments) out += comment_line(text, options.dialect);
-      out += cat({inch ? "G20" : "G21", " G17 G90 G40 G49 G80 G94\n"});
       break;
     case Dialect::fanuc: {
       std::array<char, 16> number{};
       std::snprintf(number.data(), number.size(), "O%04d", options.program_number);
       out = cat({"%\n", number.data(), " (", options.name, ")\n"});
-      for (const auto& text : comments) out += comment_line(text, options.dialect);
-      out += cat({inch ? "G20" : "G21", "\nG17 G40 G49 G80 G90 G94\n"});
       break;
     }
     case Dialect::sinumerik:
       out = cat({"; ", options.name, "\n"});
-      for (const auto& text : comments) out += comment_line(text, options.dialect);
+      break;
+  }
+  for (const auto& text : comments) out += comment_line(text, options.dialect);
+  return out;
+}
+
+std::string program_header(const std::vector<std::string>& comments,
+                           const ProgramOptions& options) {
+  const bool inch = options.units == Units::inch;
+  std::string out = program_start(comments, options);
+  switch (options.dialect) {
+    case Dialect::linuxcnc:
+      out += cat({inch ? "G20" : "G21", " G17 G90 G40 G49 G80 G94\n"});
+      break;
+    case Dialect::fanuc:
+      out += cat({inch ? "G20" : "G21", "\nG17 G40 G49 G80 G90 G94\n"});
+      break;
+    case Dialect::sinumerik:
       out += cat({"G17 ", inch ? "G700" : "G710", " G40 G90 G94\n"});
       break;
   }
-  return out + cat({"G", std::to_string(options.work_offset), "\n"});
+  return out + work_offset_line(options);
+}
+
+std::string work_offset_line(const ProgramOptions& options) {
+  return cat({"G", std::to_string(options.work_offset), "\n"});
 }
 
 std::string safe_start_text(const SafeStart& start, const ProgramOptions& options) {

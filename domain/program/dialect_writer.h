@@ -33,6 +33,10 @@ const DialectWords& words_of(Dialect dialect);
 // name line, the comment lines, the units and modal lines and the work offset; the tool change
 // and first move to the safe height; the end.
 std::string program_header(const std::vector<std::string>& comments, const ProgramOptions& options);
+// The first of them, the same for mills and lathes: the start and name line(s) and the comments.
+std::string program_start(const std::vector<std::string>& comments, const ProgramOptions& options);
+// "G54\n": the work offset line.
+std::string work_offset_line(const ProgramOptions& options);
 std::string safe_start_text(const SafeStart& start, const ProgramOptions& options);
 std::string program_end(const ProgramOptions& options);
 

@@ -10,13 +10,13 @@ namespace {
 bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
+}  // namespace
+
 std::string number_text(double value) {
   std::array<char, 64> buffer{};
   std::snprintf(buffer.data(), buffer.size(), "%.6g", value);
   return buffer.data();
 }
-
-}  // namespace
 
 int default_decimals(Dialect dialect, Units units) {
   const int mm = dialect == Dialect::linuxcnc ? 4 : 3;

@@ -17,10 +17,12 @@ enum class Units { mm, inch };
 enum class Coolant { off, flood, mist };
 
 inline constexpr double kMmPerInch = 25.4;
+inline constexpr double kMPerFoot = 0.3048;  // G96 surface speed in ft/min under inch units
 inline constexpr int kMinDecimals = 3;
 inline constexpr int kMaxDecimals = 6;
 inline constexpr int kMaxProgramNumber = 7999;  // O8000-O9999: edit-protected on many Fanucs
 inline constexpr int kMaxToolNumber = 9999;
+inline constexpr int kMaxTurretTool = 99;  // lathe: Fanuc T{tt}{oo} has two digits for each
 
 struct ProgramOptions {
   Dialect dialect = Dialect::linuxcnc;
@@ -70,6 +72,9 @@ struct MachineLimits {
   std::optional<double> max_spindle_rpm;
   std::optional<double> max_feed_mm_per_min;
 };
+
+// A number in a warning's detail: 6 significant digits ("%.6g").
+std::string number_text(double value);
 
 // Section 5, warnings 1 and 2: n over the spindle limit; any of `feeds_mm_per_min` (exact values)
 // over the feed limit.

@@ -1,0 +1,11 @@
+#pragma once
+// POST /v1/grooving/cycle (API.md; spec grooving-cycle.md): the "v razvod" grooving cycle, its
+// times, wall roughness and lathe program.
+
+#include "api/json_endpoint.h"
+
+namespace cutcalc::api::grooving {
+
+HandlerOutcome handle_grooving_cycle(const nlohmann::json& body);
+
+}  // namespace cutcalc::api::grooving

@@ -1,0 +1,79 @@
+#pragma once
+// A lathe program (spec grooving-cycle.md section 5, and lathe-flat.md section 6 for the same
+// dialect forms): XZ motion with X as a DIAMETER in every dialect (LinuxCNC G7, Fanuc T-series by
+// default, Sinumerik DIAMON), feed per revolution, a spindle at constant speed or constant surface
+// speed, dwells. Values are in mm, mm/rev, m/min, rev/min and seconds, unrounded; the writer
+// converts them to the program's units and prints them in the dialect's words, from one table of
+// lathe dialect facts (lathe_dialect.h).
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "domain/common/result.h"
+#include "domain/program/program_model.h"
+#include "domain/program/program_options.h"
+
+namespace cutcalc::domain::program {
+
+struct LathePoint {
+  std::optional<double> x_diameter_mm;  // X word: a diameter
+  std::optional<double> z_mm;
+};
+struct LatheRapid {  // G0
+  LathePoint to;
+};
+struct LatheFeed {  // G1, F per revolution
+  LathePoint to;
+  double feed_mm_per_rev = 0.0;
+};
+struct ConstantSpindleSpeed {  // G97 S{n} M3
+  double rpm = 0.0;
+};
+struct ConstantSurfaceSpeed {  // [G50 S{n_max}] G96 S{v} (LinuxCNC D, Sinumerik LIMS) M3
+  double cutting_speed_m_per_min = 0.0;
+  double max_rpm = 0.0;
+};
+struct Dwell {  // G4 with the time in seconds (P / X / F)
+  double seconds = 0.0;
+};
+
+using LatheBlock = std::variant<LatheRapid, LatheFeed, ConstantSpindleSpeed, ConstantSurfaceSpeed,
+                                Dwell, SpindleOff, CoolantOn, CoolantOff>;
+
+// The modal line(s) after the name and comments, one form per dialect; "{units}" stands for the
+// dialect's units word (G21/G20, Sinumerik G710/G700). Each program states its own.
+struct LatheModalLines {
+  const char* linuxcnc;
+  const char* fanuc;
+  const char* sinumerik;
+};
+
+struct LatheProgram {
+  std::vector<std::string> comments;  // after the name line; written in the dialect's comment form
+  LatheModalLines modal{};
+  std::vector<LatheBlock> blocks;  // after the work offset and the tool call
+};
+
+// Dwell times are printed with 3 decimals in every dialect and unit (seconds).
+inline constexpr int kDwellDecimals = 3;
+
+// The whole text, LF line ends. Error word_prints_as_zero when an F, S, D, LIMS or G50 S value, or
+// a dwell, would print as zero (a control would stop the feed or the spindle, or reject the block).
+Result<std::string> write_lathe_program(const LatheProgram& program, const ProgramOptions& options);
+
+// The Fanuc S words of a spindle block: integers (v and n round half up; n_max floors, never above
+// the limit); the values in the program's units (G96 in ft/min under G20).
+struct FanucSpindleWords {
+  double s = 0.0;                   // G96 S or G97 S
+  std::optional<double> clamp_rpm;  // G50 S, with G96
+  bool rounded = false;             // any of them differs from the exact value by more than 1e-9
+};
+FanucSpindleWords fanuc_spindle_words(const ConstantSpindleSpeed& spindle);
+FanucSpindleWords fanuc_spindle_words(const ConstantSurfaceSpeed& spindle, Units units);
+
+// The surface speed as written: m/min, or ft/min under inch units.
+double surface_speed_in_program_units(double cutting_speed_m_per_min, Units units);
+
+}  // namespace cutcalc::domain::program
