@@ -6,25 +6,28 @@
 # generated clients (codegen), the container and the Kubernetes manifests (each script says what it proves).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each step's start, in seconds since this script began: CI must stay under 45 minutes, and a
+# step that grows shows here first.
+step() { echo "=== $1 (at ${SECONDS} s)"; }
 scripts/setup.sh
 
 for preset in release dev tsan; do
-  echo "=== ${preset}: configure and build"
+  step "${preset}: configure and build"
   cmake --preset "$preset"
   cmake --build --preset "$preset"
-  echo "=== ${preset}: test"
+  step "${preset}: test"
   ctest --preset "$preset" -j 2
 done
-echo "=== fuzz: every libFuzzer harness (ASan + UBSan) for a bounded time, seeded from the reference cases"
+step "fuzz: every libFuzzer harness (ASan + UBSan) for a bounded time, seeded from the reference cases"
 scripts/ci-fuzz.sh
-echo "=== contract: lint openapi.yaml, replay every reference and bad-input case through Prism, then property-based requests from the request schemas"
+step "contract: lint openapi.yaml, replay every reference and bad-input case through Prism, then property-based requests from the request schemas"
 scripts/ci-contract.sh
-echo "=== codegen: openapi-typescript + openapi-fetch and @hey-api/openapi-ts clients, tsc --strict, every reference case against cutcalc"
+step "codegen: openapi-typescript + openapi-fetch and @hey-api/openapi-ts clients, tsc --strict, every reference case against cutcalc"
 scripts/ci-codegen.sh
-echo "=== container: build the Dockerfile with podman, run it and replay the reference cases"
+step "container: build the Dockerfile with podman, run it and replay the reference cases"
 scripts/ci-container.sh
-echo "=== Kubernetes manifests: render offline and validate"
+step "Kubernetes manifests: render offline and validate"
 scripts/ci-k8s.sh
-echo "=== e2e: the web calculator in headless Chromium (Playwright) against a live release cutcalc"
+step "e2e: the web calculator in headless Chromium (Playwright) against a live release cutcalc"
 scripts/ci-e2e.sh
-echo "=== all tests passed"
+step "all tests passed"

@@ -92,6 +92,10 @@ std::string format_fixed(double value, int decimals) {
   return text;
 }
 
+bool prints_as_zero(std::string_view printed) {
+  return printed.find_first_not_of("0.") == std::string_view::npos;
+}
+
 double to_program_units(double mm, Units units) {
   return units == Units::inch ? mm / kMmPerInch : mm;
 }

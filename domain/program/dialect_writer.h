@@ -43,6 +43,9 @@ std::string program_end(const ProgramOptions& options);
 // printf("%.*f", decimals, value) without the sign of a value that prints as zero.
 std::string format_fixed(double value, int decimals);
 
+// A printed number that reads as zero ("0.000", "0"): a word a control would stop or refuse at.
+bool prints_as_zero(std::string_view printed);
+
 // A length or feed in the program's units (mm, or inch: / 25.4).
 double to_program_units(double mm, Units units);
 

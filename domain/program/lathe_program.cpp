@@ -9,11 +9,6 @@
 namespace cutcalc::domain::program {
 namespace {
 
-// A printed number that reads as zero ("0.000", "0").
-bool prints_as_zero(const std::string& text) {
-  return text.find_first_not_of("0.") == std::string::npos;
-}
-
 class LatheWriter {
  public:
   explicit LatheWriter(const ProgramOptions& options)

@@ -72,11 +72,6 @@ std::vector<Level> levels_of(const entry::MainTimeResult& main_time,
   return out;
 }
 
-// A printed number that reads as zero ("0.000", "0").
-bool prints_as_zero(const std::string& text) {
-  return text.find_first_not_of("0.") == std::string::npos;
-}
-
 double distance(const Axes& a, const Axes& b) {
   return std::hypot(a.x_mm.value_or(0.0) - b.x_mm.value_or(0.0),
                     a.y_mm.value_or(0.0) - b.y_mm.value_or(0.0),
