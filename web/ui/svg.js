@@ -203,6 +203,23 @@ export function horizontalDimension({ role, x1, x2, y, from1, from2, text, arrow
   return g;
 }
 
+// A dimension line between (x, y1) and (x, y2) (screen space) with arrowheads, extension lines
+// across from the measured points (at x from1 and from2) and the text beside it, on the right.
+export function verticalDimension({ role, x, y1, y2, from1, from2, text, arrow }) {
+  const g = s('g', { 'data-role': role });
+  const ext = (y, x0) =>
+    x0 === undefined
+      ? null
+      : s('line', { class: 's-dimension-extension', x1: x0, y1: y, x2: x, y2: y });
+  g.append(ext(y1, from1), ext(y2, from2));
+  g.append(s('line', { class: 's-dimension', x1: x, y1, x2: x, y2 }));
+  if (Math.abs(y2 - y1) > arrow * 2.2) {
+    g.append(arrowHead(x, y1, 0, y1 - y2, arrow), arrowHead(x, y2, 0, y2 - y1, arrow));
+  }
+  g.append(s('text', { x, y: (y1 + y2) / 2, dx: '0.4em', dy: '0.35em' }, text));
+  return g;
+}
+
 // ------------------------------------------------------------------ plots
 
 // "Nice" tick values covering [min, max], about `count` of them.
