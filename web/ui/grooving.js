@@ -132,9 +132,16 @@ function cycleResults(body) {
       [[t('result.side_chip_thickness'), ' ', ...sym('a', '1')], '/side_chip_thickness_mm', 'mm'],
       [[t('result.wall_pitch'), ' ', ...sym('4s')], '/wall_pitch_mm', 'mm'],
       [[t('result.wall_rz'), ' ', ...sym('Rz', 'p')], '/wall_rz_um', 'um'],
-      [[t('result.crest_formed_by')], '/wall_rz_branch', '', describeBranch],
       [[t('result.plain_plunge_rz'), ' ', ...sym('Rz', 'p')], '/plain_plunge_rz_um', 'um'],
     ]),
+    // A sentence, not a list row: the words of the branch stay on one line on a printed sheet.
+    h(
+      'p',
+      { 'data-role': 'wall-rz-branch' },
+      t('result.crest_formed_by'),
+      ': ',
+      value(body, '/wall_rz_branch', '', undefined, describeBranch),
+    ),
     h('p', { class: 'source-note' }, tn('result.grooving_rz_note')),
     warningList(body),
   ];

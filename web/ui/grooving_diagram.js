@@ -49,7 +49,7 @@ function sectionView({ grooveWidth: W, startDiameter: D0, leftZ: zL }, answer, c
     return noDiagram(t('result.no_geometry'));
   }
   const size = Math.max(W, depth);
-  const side = 0.45 * size; // workpiece shown beside the groove
+  const side = 0.7 * size; // workpiece shown beside the groove (room for the diameters' texts)
   const below = 0.45 * size; // and under its bottom
   const toolHeight = 0.9 * size;
   const zR = zL + W;
@@ -68,7 +68,7 @@ function sectionView({ grooveWidth: W, startDiameter: D0, leftZ: zL }, answer, c
   ];
   const box = new Bounds().addAll(material);
   box.add(...toScreen(zL, Ra + toolHeight + 0.3 * size));
-  box.add(...toScreen(zR + side + 0.9 * size, R0)); // room for the depth's text
+  box.add(...toScreen(zR + 0.6 * side + 0.9 * size, R0)); // room for the depth's text
   const viewBox = box.viewBox(0.04);
   const upp = unitsPerPixel(viewBox[2], container);
   const arrow = 8 * upp;
