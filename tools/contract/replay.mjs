@@ -212,8 +212,75 @@ function programFacts(program, blocksPerLoop) {
   return facts;
 }
 
+// Facts of a lathe program (grooving-cycle.md section 5.5): its lines, the spindle start block,
+// the counts of feed, Z-feed and dwell blocks, the smallest printed X, and the sums of |change| of
+// the printed X and Z over the feed blocks (program units).
+function latheFacts(program) {
+  const lines = program.split('\n');
+  if (lines[lines.length - 1] === '') lines.pop();
+  const facts = { lines, spindleLines: [], feedMoves: 0, zFeedMoves: 0, dwellBlocks: 0, minX: Infinity, xTravel: 0, zTravel: 0 };
+  let x;
+  let z;
+  for (const line of lines) {
+    if (/(^|\s)M0?3(\s|$)/.test(line)) facts.spindleLines.push(line);
+    if (/^G0?4\s/.test(line)) facts.dwellBlocks++;
+    if (/^(G0?1|G0?0)(\s|$)/.test(line) === false) continue;
+    const feed = /^G0?1(\s|$)/.test(line);
+    const xWord = word(line, 'X');
+    const zWord = word(line, 'Z');
+    if (feed) {
+      facts.feedMoves++;
+      if (zWord !== '') facts.zFeedMoves++;
+      if (xWord !== '' && x !== undefined) facts.xTravel += Math.abs(Number(xWord) - x);
+      if (zWord !== '' && z !== undefined) facts.zTravel += Math.abs(Number(zWord) - z);
+    }
+    if (xWord !== '') {
+      x = Number(xWord);
+      facts.minX = Math.min(facts.minX, x);
+    }
+    if (zWord !== '') z = Number(zWord);
+  }
+  return facts;
+}
+
+// The section 5.5 checks of a lathe program; `decimals` as the answer states it.
+function checkLatheProgram(checks, body, out) {
+  const facts = latheFacts(body.program);
+  const step = 10 ** -body.decimals;
+  const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+  if ('first_lines' in checks && !same(facts.lines.slice(0, checks.first_lines.length), checks.first_lines)) {
+    out.push(`program: first lines ${JSON.stringify(facts.lines.slice(0, checks.first_lines.length))}, want ${JSON.stringify(checks.first_lines)}`);
+  }
+  if ('last_lines' in checks && !same(facts.lines.slice(-checks.last_lines.length), checks.last_lines)) {
+    out.push(`program: last lines ${JSON.stringify(facts.lines.slice(-checks.last_lines.length))}, want ${JSON.stringify(checks.last_lines)}`);
+  }
+  if ('spindle_line' in checks && !same(facts.spindleLines, [checks.spindle_line])) {
+    out.push(`program: spindle start blocks ${JSON.stringify(facts.spindleLines)}, want ["${checks.spindle_line}"]`);
+  }
+  for (const [key, got] of [['feed_moves', facts.feedMoves], ['z_feed_moves', facts.zFeedMoves], ['dwell_blocks', facts.dwellBlocks]]) {
+    if (key in checks && got !== checks[key]) out.push(`program: ${key} ${got}, want ${checks[key]}`);
+  }
+  if ('min_x' in checks && !(Math.abs(facts.minX - checks.min_x) <= 0.5 * step + 1e-12)) {
+    out.push(`program: smallest X ${facts.minX}, want ${checks.min_x}`);
+  }
+  for (const [key, got] of [['x_feed_travel', facts.xTravel], ['z_feed_travel', facts.zTravel]]) {
+    if (key in checks && !(Math.abs(got - checks[key]) <= facts.feedMoves * step + 1e-9)) {
+      out.push(`program: ${key} ${got}, want ${checks[key]} within ${facts.feedMoves} x ${step}`);
+    }
+  }
+}
+
+const kPolygonFacts = ['loops', 'layers', 'z_min', 'g95_flat_F', 'g94_F', 'last_C'];
+// rs274's acceptance is the gcode tests' to check (tests/gcode), with the program translated.
+const kCheckedByGcodeTests = ['rs274'];
+const kLatheFacts = ['first_lines', 'last_lines', 'spindle_line', 'feed_moves', 'z_feed_moves', 'dwell_blocks', 'min_x', 'x_feed_travel', 'z_feed_travel'];
+
 function checkProgram(checks, body, request, out) {
   if (typeof body.program !== 'string') return out.push('/program: missing');
+  // A fact this replayer does not know would pass unchecked: refuse it instead.
+  const unknown = Object.keys(checks).filter(k => ![...kPolygonFacts, ...kLatheFacts, ...kCheckedByGcodeTests].includes(k));
+  if (unknown.length > 0) return out.push(`program: facts this replayer cannot check: ${unknown.join(', ')}`);
+  if (Object.keys(checks).some(k => kLatheFacts.includes(k))) checkLatheProgram(checks, body, out);
   const perLoop = body.blocks_per_loop;
   const facts = programFacts(body.program, Number.isInteger(perLoop) ? perLoop : 0);
   if ('loops' in checks) {
