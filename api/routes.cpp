@@ -57,7 +57,8 @@ std::span<const CalculationRoute> calculation_routes() {
       CalculationRoute{.path = "/v1/grooving/cycle",
                        .handler = &grooving::handle_grooving_cycle,
                        .forms = json_and_plain_text_program,
-                       .reference_files = {"next/grooving-cycle.json"}},
+                       .reference_files = {"next/grooving-cycle.json"},
+                       .page_section = "grooving"},
   };
   return routes;
 }

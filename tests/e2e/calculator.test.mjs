@@ -13,8 +13,10 @@
 //   - the displayed text is that value rounded (to the decimals shown) with its unit next to it;
 //   - the diagrams have their parts (data-role) with non-empty geometry, the dimension texts of the
 //     entry scheme match L_vr and X_n, the polygon has N vertices;
-//   - polygon: the program <pre> is the API's program, the Download program button downloads a *.ngc
-//     file whose content equals the API's text/plain answer to the same request.
+//   - polygon and grooving: the program <pre> is the API's program, the Download program button
+//     downloads a file (*.ngc, *.nc, *.MPF) whose content equals the API's text/plain answer to the
+//     same request; grooving: the groove's dimension texts match W, h, B and X2, the pattern strip
+//     draws the first revolutions.
 // One invalid input (cutter diameter -5) must show the API's own message for that pointer next to
 // the input, with aria-invalid and aria-describedby; a resubmit clears it. At 375 px and 1280 px,
 // on the page's default values, every form is reached and submitted with the keyboard alone (Tab,
@@ -143,6 +145,22 @@ const SECTIONS = [
       'polygon-corner': ['polygon', 'predicted-hole'],
       'polygon-rotor': ['rotor', 'corner-circle', 'neck-circle', 'corner-circle-diameter', 'neck-diameter', 'flank-radius', 'corner-angle'],
     },
+    program: { arcs: true },
+  },
+  {
+    id: 'grooving',
+    file: 'next/grooving-cycle.json',
+    tolerance: c => (ptr, want) => Math.max(c.tolerance.abs_min, c.tolerance.rel * Math.abs(want)),
+    // A case with program options, so that the form's program fields are used too.
+    prefer: c => (c.request.program !== undefined ? 0 : 1),
+    endpoints: { main: '/v1/grooving/cycle' },
+    shown: { main: ['/cycle_time_min', '/wall_rz_um', '/revolutions'] },
+    diagrams: {
+      'grooving-section': ['workpiece', 'groove', 'tool-start', 'tool-end', 'reference-point',
+        'dimension-width', 'dimension-tool', 'dimension-shift', 'dimension-depth'],
+      'grooving-pattern': ['pattern-walls', 'revolution', 'final-shift'],
+    },
+    program: { arcs: false },
   },
 ];
 
@@ -937,7 +955,24 @@ describe('calculator page at 1280 px', () => {
             `polygon-hole [data-role="polygon"] has ${p.points} vertices for ${kase.request.faces} faces`,
           );
         }
-        await checkProgramAndDownload(page, bySource.main);
+      }
+      if (section.id === 'grooving') {
+        // The groove's dimensions are the request's width and the answer's depth and tool; the
+        // pattern strip has the first revolutions (at most 8) and, when there are more, the last.
+        const answer = bySource.main.json;
+        const parts = drawn['grooving-section'].parts;
+        assertDimension('grooving-section', 'dimension-width', parts, kase.request.groove_width_mm, 'W');
+        assertDimension('grooving-section', 'dimension-depth', parts, answer.groove_depth_mm, 'h');
+        assertDimension('grooving-section', 'dimension-tool', parts, answer.tool_width_mm, 'B');
+        assertDimension('grooving-section', 'dimension-shift', parts, answer.shift_mm, 'X2');
+        const rows = drawn['grooving-pattern'].parts.revolution.length;
+        const N = answer.revolutions;
+        assert.equal(rows, Math.min(N, 8) + (N > 8 ? 1 : 0), `grooving-pattern: ${rows} revolutions drawn for N = ${N}`);
+        const dwell = await page.locator('#grooving-result [data-role="dwell-seconds"]').textContent();
+        assert.ok(dwell.includes((answer.dwell_time_min * 60).toFixed(3)), `grooving: the dwell in seconds is shown: ${dwell}`);
+      }
+      if (section.program) {
+        await checkProgramAndDownload(page, bySource.main, section.id, section.program);
       }
       await noHorizontalScroll(page, 1280);
       console.log(`# ${section.id}: case ${kase.id} (${section.file}), ${shown.length} numbers shown, ` +
@@ -953,30 +988,30 @@ describe('calculator page at 1280 px', () => {
   });
 });
 
-async function checkProgramAndDownload(page, exchange) {
+async function checkProgramAndDownload(page, exchange, id, { arcs }) {
   const program = exchange.json.program;
   assert.equal(typeof program, 'string', 'the JSON answer has a program');
-  await page.waitForFunction(p => document.getElementById('polygon-program')?.textContent.trim() === p.trim(), program, { timeout: WAIT_MS })
+  await page.waitForFunction(([id, p]) => document.getElementById(`${id}-program`)?.textContent.trim() === p.trim(), [id, program], { timeout: WAIT_MS })
     .catch(async () => {
-      const shown = await page.locator('#polygon-program').textContent();
-      assert.fail(`#polygon-program does not show the API's program; it shows: ${JSON.stringify(shown?.slice(0, 200))}`);
+      const shown = await page.locator(`#${id}-program`).textContent();
+      assert.fail(`#${id}-program does not show the API's program; it shows: ${JSON.stringify(shown?.slice(0, 200))}`);
     });
   const firstLine = program.split('\n').find(l => l.trim() !== '') ?? '';
   assert.match(firstLine.trim(), /^(%|\(|;|[GMNOT]\d)/, `the program starts like a G-code program: "${firstLine}"`);
-  assert.match(program, /\bG0?[23]\b/, 'the program has arc blocks (G2/G3)');
+  if (arcs) assert.match(program, /\bG0?[23]\b/, 'the program has arc blocks (G2/G3)');
   assert.match(program, /\bM0?(2|30)\b/, 'the program ends with M2 or M30');
-  const pre = await page.evaluate(() => {
-    const pre = document.getElementById('polygon-program');
+  const pre = await page.evaluate(id => {
+    const pre = document.getElementById(`${id}-program`);
     const style = getComputedStyle(pre);
     return { overflow: `${style.overflow} ${style.overflowX} ${style.overflowY}` };
-  });
-  assert.match(pre.overflow, /auto|scroll/, `#polygon-program is scrollable (overflow: ${pre.overflow})`);
+  }, id);
+  assert.match(pre.overflow, /auto|scroll/, `#${id}-program is scrollable (overflow: ${pre.overflow})`);
 
-  const button = page.locator('#polygon-download');
-  assert.ok(await button.isEnabled(), '#polygon-download is enabled after a successful calculation');
+  const button = page.locator(`#${id}-download`);
+  assert.ok(await button.isEnabled(), `#${id}-download is enabled after a successful calculation`);
   const [download] = await Promise.all([page.waitForEvent('download', { timeout: WAIT_MS }), button.click()]);
   const name = download.suggestedFilename();
-  assert.match(name, /\.ngc$/, `the download's file name "${name}" ends .ngc`);
+  assert.match(name, /\.(ngc|nc|MPF)$/, `the download's file name "${name}" ends .ngc, .nc or .MPF`);
   const file = await download.path();
   const content = readFileSync(file, 'utf8');
   const plain = await apiPost(exchange.path, exchange.requestBody, 'text/plain');
@@ -985,7 +1020,7 @@ async function checkProgramAndDownload(page, exchange) {
   const disposition = plain.headers.get('content-disposition') ?? '';
   const serverName = /filename="?([^";]+)"?/.exec(disposition)?.[1];
   if (serverName) assert.equal(name, serverName, "the download has the server's file name");
-  console.log(`# polygon: downloaded ${name} (${content.length} bytes), equal to the text/plain answer`);
+  console.log(`# ${id}: downloaded ${name} (${content.length} bytes), equal to the text/plain answer`);
 }
 
 // An id for a CSS selector (what CSS.escape does for the usual characters).

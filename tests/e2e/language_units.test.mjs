@@ -257,20 +257,21 @@ describe('inches', () => {
     const { context, page, log } = await openPage(`${PAGE_URL}?units=inch`);
     try {
       await settle(log);
-      const programs = log.exchanges.filter(e => e.path === '/v1/main-time/program' || e.path === '/v1/polygon-hole/gcode');
-      assert.equal(programs.length, 2, 'one program request per program section');
+      const PROGRAM_PATHS = ['/v1/main-time/program', '/v1/polygon-hole/gcode', '/v1/grooving/cycle'];
+      const programs = log.exchanges.filter(e => PROGRAM_PATHS.includes(e.path));
+      assert.equal(programs.length, PROGRAM_PATHS.length, 'one program request per program section');
       for (const e of programs) {
         assert.equal(JSON.parse(e.body).program?.units, 'inch', `${e.path}: program.units`);
         assert.equal(e.json?.units ?? 'inch', 'inch', `${e.path}: the answer's units`);
       }
-      for (const id of ['entry', 'polygon']) {
+      for (const id of ['entry', 'polygon', 'grooving']) {
         const [download] = await Promise.all([page.waitForEvent('download'), page.locator(`#${id}-download`).click()]);
         const program = readFileSync(await download.path(), 'utf8');
         assert.match(program, /\bG20\b/, `the ${id} program downloads in inches (G20)`);
         assert.doesNotMatch(program, /\bG21\b/, `the ${id} program is not in mm`);
       }
       await settle(log);
-      console.log('# inch page: both programs asked for with program.units "inch", both download with G20');
+      console.log(`# inch page: ${programs.length} programs asked for with program.units "inch", each downloads with G20`);
       await assertClean(page, log, 'inch programs');
     } finally {
       await context.close();

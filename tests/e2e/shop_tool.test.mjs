@@ -53,6 +53,7 @@ const SECTIONS = [
   },
   { id: 'bore', requests: { '/v1/roughness/bore-milling': 1 }, edit: ['/teeth', '6'] },
   { id: 'polygon', requests: { '/v1/polygon-hole/gcode': 1 }, edit: ['/faces', '5'] },
+  { id: 'grooving', requests: { '/v1/grooving/cycle': 1 }, edit: ['/feed_per_rev_mm', '0.1'] },
 ];
 const byId = id => SECTIONS.find(s => s.id === id);
 // Sections here are optional, but each is a page section of the route table (cutcalc --routes).

@@ -5,6 +5,7 @@
 import * as bore from './bore.js';
 import * as entry from './entry.js';
 import * as groove from './groove.js';
+import * as grooving from './grooving.js';
 import { translatePage } from './i18n.js';
 import { wirePageHistory } from './page_history.js';
 import { wirePageSettings } from './page_settings.js';
@@ -16,7 +17,7 @@ import { applyUnitsToPage } from './units.js';
 
 translatePage();
 applyUnitsToPage();
-const calculators = [entry, speeds, groove, bore, polygon].map((section) => section.init());
+const calculators = [entry, speeds, groove, bore, polygon, grooving].map((section) => section.init());
 wireSectionTools(calculators);
 wirePageHistory(calculators);
 wirePrintSheets(calculators);

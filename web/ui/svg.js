@@ -194,12 +194,30 @@ export function horizontalDimension({ role, x1, x2, y, from1, from2, text, arrow
     y0 === undefined
       ? null
       : s('line', { class: 's-dimension-extension', x1: x, y1: y0, x2: x, y2: y });
-  g.append(ext(x1, from1), ext(x2, from2));
+  // An extension line only where a measured point is given (append(null) would add "null").
+  g.append(...[ext(x1, from1), ext(x2, from2)].filter(Boolean));
   g.append(s('line', { class: 's-dimension', x1, y1: y, x2, y2: y }));
   if (Math.abs(x2 - x1) > arrow * 2.2) {
     g.append(arrowHead(x1, y, x1 - x2, 0, arrow), arrowHead(x2, y, x2 - x1, 0, arrow));
   }
   g.append(s('text', { x: (x1 + x2) / 2, y, dy: '-0.45em', 'text-anchor': 'middle' }, text));
+  return g;
+}
+
+// A dimension line between (x, y1) and (x, y2) (screen space) with arrowheads, extension lines
+// across from the measured points (at x from1 and from2) and the text beside it, on the right.
+export function verticalDimension({ role, x, y1, y2, from1, from2, text, arrow }) {
+  const g = s('g', { 'data-role': role });
+  const ext = (y, x0) =>
+    x0 === undefined
+      ? null
+      : s('line', { class: 's-dimension-extension', x1: x0, y1: y, x2: x, y2: y });
+  g.append(...[ext(y1, from1), ext(y2, from2)].filter(Boolean));
+  g.append(s('line', { class: 's-dimension', x1: x, y1, x2: x, y2 }));
+  if (Math.abs(y2 - y1) > arrow * 2.2) {
+    g.append(arrowHead(x, y1, 0, y1 - y2, arrow), arrowHead(x, y2, 0, y2 - y1, arrow));
+  }
+  g.append(s('text', { x, y: (y1 + y2) / 2, dx: '0.4em', dy: '0.35em' }, text));
   return g;
 }
 
