@@ -10,7 +10,8 @@
 //    M(D1, D2) (L in radius space: canon prints X as a radius in G7; F as printed; M of K16),
 //    equals approach + plunge + shift + final_shift time within the printing error;
 //  - with the same `decimals`, fanuc and sinumerik give the same STRAIGHT_TRAVERSE /
-//    STRAIGHT_FEED / SET_FEED_RATE / DWELL sequence as linuxcnc (within 1.5e-4).
+//    STRAIGHT_FEED / SET_FEED_RATE / DWELL sequence as linuxcnc (within 1.5e-4), and the same
+//    SET_FEED_MODE (feed per revolution in all three).
 // The reference case's own program facts (section 5.5) are the replay's
 // (tools/contract/replay.mjs), checked over HTTP for every consumer.
 
@@ -66,7 +67,7 @@ std::string tool_table() {
 }
 
 struct Command {
-  std::string name;  // STRAIGHT_TRAVERSE, STRAIGHT_FEED, SET_FEED_RATE, DWELL
+  std::string name;  // STRAIGHT_TRAVERSE, STRAIGHT_FEED, SET_FEED_RATE, SET_FEED_MODE, DWELL
   std::vector<double> args;
 };
 
@@ -75,8 +76,8 @@ std::vector<Command> canonical(const std::string& output) {
   std::istringstream in(output);
   std::string line;
   while (std::getline(in, line)) {
-    for (const char* call :
-         {" STRAIGHT_TRAVERSE(", " STRAIGHT_FEED(", " SET_FEED_RATE(", " DWELL("}) {
+    for (const char* call : {" STRAIGHT_TRAVERSE(", " STRAIGHT_FEED(", " SET_FEED_RATE(",
+                             " SET_FEED_MODE(", " DWELL("}) {
       const std::string_view text(call);
       const auto at = line.find(text);
       if (at == std::string::npos) continue;
@@ -169,6 +170,19 @@ void check_facts(const json& request, const Written& got) {
     x_travel += std::fabs(move.x - move.from_x);
     z_travel += std::fabs(move.z - move.from_z);
   }
+  // The tool's left corner stays between z_L and z_R = z_L + X2 (else the tool, B = W - X2 wide,
+  // cuts into a wall), and the final shift crosses the whole shift to the other wall.
+  const double z_left = request.at("groove_left_z_mm").get<double>() / unit;
+  const double shift = body.at("shift_mm").get<double>() / unit;
+  for (const TextMove& move : moves) {
+    if (!move.feed) continue;
+    EXPECT_GE(move.z, z_left - 0.5 * step) << "a feed move left of the groove";
+    EXPECT_LE(move.z, z_left + shift + step) << "a feed move right of the groove";
+  }
+  const auto last_feed =
+      std::find_if(moves.rbegin(), moves.rend(), [](const TextMove& move) { return move.feed; });
+  ASSERT_NE(last_feed, moves.rend());
+  EXPECT_NEAR(std::fabs(last_feed->z - last_feed->from_z), shift, step) << "the final shift";
   EXPECT_EQ(feed_moves, n + 2);
   EXPECT_EQ(z_feed_moves, shifts);
   EXPECT_NEAR(min_x, body.at("bottom_diameter_mm").get<double>() / unit, 0.5 * step);
@@ -192,6 +206,8 @@ void check_facts(const json& request, const Written& got) {
   const double e_f = 0.5 * step + (decimals > 4 ? canon_round : 0.0);
   int canon_feeds = 0;
   int dwells = 0;
+  bool per_revolution = false;
+  int per_minute_feeds = 0;
   double x = 0, z = 0, f = 0;  // canon: X a radius, program units
   double time_min = 0.0;
   double bound_min = 0.0;
@@ -207,11 +223,14 @@ void check_facts(const json& request, const Written& got) {
       EXPECT_NEAR(c.args.at(0), dwell_s, 0.5e-3 + 1e-9);
     } else if (c.name == "SET_FEED_RATE") {
       f = c.args.at(0);
+    } else if (c.name == "SET_FEED_MODE") {
+      per_revolution = c.args.size() == 2 && c.args[1] == 1.0;  // (spindle, 1 = units per rev)
     } else if (c.args.size() >= 3) {
       const double to_x = c.args[0];
       const double to_z = c.args[2];
       if (c.name == "STRAIGHT_FEED") {
         ++canon_feeds;
+        if (!per_revolution) ++per_minute_feeds;
         const double length = std::hypot(to_x - x, to_z - z);
         const double d1_mm = 2 * x * unit;
         const double d2_mm = 2 * to_x * unit;
@@ -235,6 +254,7 @@ void check_facts(const json& request, const Written& got) {
   }
   close_point(open_gx, open_gz);
   EXPECT_EQ(canon_feeds, n + 2);
+  EXPECT_EQ(per_minute_feeds, 0) << "feed moves not in feed per revolution (G95)";
   EXPECT_EQ(dwells, dwell_s > 0 ? 1 : 0);
   const double feed_time =
       body.at("approach_time_min").get<double>() + body.at("plunge_time_min").get<double>() +
