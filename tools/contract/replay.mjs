@@ -4,7 +4,9 @@
 // reference (status; numbers within the file's tolerance, strings exactly, lists element-wise,
 // objects recursively; expect.max / expect.min bounds; warning codes as a multiset; the problem's
 // errors[] naming expect.pointer, as application/problem+json; the program facts of
-// expect.program: loops, layers, z_min, g95_flat_F, g94_F, last_C) and every answer, success or
+// expect.program: loops, layers, z_min, g95_flat_F, g94_F, last_C; the lathe facts first_lines,
+// last_lines, spindle_line, feed_moves, z_feed_moves, dwell_blocks, min_x, x_feed_travel,
+// z_feed_travel) and every answer, success or
 // problem, against openapi.yaml (contract.mjs: Ajv, JSON Schema 2020-12; status, media type,
 // headers, body). A case listed in tests/reference-corrections.json (a request that contradicts the spec
 // it cites) is replayed with its corrected request, said in the output. rs274 acceptance of the programs (expect.program.rs274) is tests/gcode's.
@@ -212,6 +214,68 @@ function programFacts(program, blocksPerLoop) {
   return facts;
 }
 
+// Facts of a lathe program (grooving-cycle.md section 5.5): its lines, the one block that starts
+// the spindle, the G1 blocks (with a Z word), the dwell blocks, the smallest printed X (a dwell's
+// fanuc X is seconds, not a diameter) and the sums of |change| of the printed X and Z over the
+// G1 blocks. Comments: `( )` and `;`.
+function latheProgramFacts(program) {
+  const lines = program.split('\n');
+  if (lines.at(-1) === '') lines.pop();
+  const facts = { lines, spindleLines: [], feedMoves: 0, zFeedMoves: 0, dwellBlocks: 0, minX: Infinity, xTravel: 0, zTravel: 0 };
+  let x;
+  let z;
+  for (const line of lines) {
+    const block = line.replace(/\([^)]*\)/g, '').replace(/;.*$/, '').trim();
+    if (block === '' || block === '%') continue;
+    const words = block.split(/\s+/);
+    const has = (...w) => words.some(v => w.includes(v));
+    if (has('M3', 'M03', 'M4', 'M04')) facts.spindleLines.push(line);
+    if (has('G4', 'G04')) {
+      facts.dwellBlocks++;
+      continue;
+    }
+    const xWord = word(block, 'X');
+    const zWord = word(block, 'Z');
+    if (has('G1', 'G01')) {
+      facts.feedMoves++;
+      if (zWord !== '') facts.zFeedMoves++;
+      if (xWord !== '' && x !== undefined) facts.xTravel += Math.abs(Number(xWord) - x);
+      if (zWord !== '' && z !== undefined) facts.zTravel += Math.abs(Number(zWord) - z);
+    }
+    if (xWord !== '') {
+      x = Number(xWord);
+      facts.minX = Math.min(facts.minX, x);
+    }
+    if (zWord !== '') z = Number(zWord);
+  }
+  return facts;
+}
+
+function checkLatheProgram(checks, body, out) {
+  const facts = latheProgramFacts(body.program);
+  const step = 10 ** -body.decimals;
+  const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+  if ('first_lines' in checks && !same(facts.lines.slice(0, checks.first_lines.length), checks.first_lines)) {
+    out.push(`program: first lines ${JSON.stringify(facts.lines.slice(0, checks.first_lines.length))}, want ${JSON.stringify(checks.first_lines)}`);
+  }
+  if ('last_lines' in checks && !same(facts.lines.slice(-checks.last_lines.length), checks.last_lines)) {
+    out.push(`program: last lines ${JSON.stringify(facts.lines.slice(-checks.last_lines.length))}, want ${JSON.stringify(checks.last_lines)}`);
+  }
+  if ('spindle_line' in checks && !same(facts.spindleLines, [checks.spindle_line])) {
+    out.push(`program: spindle blocks ${JSON.stringify(facts.spindleLines)}, want [${JSON.stringify(checks.spindle_line)}]`);
+  }
+  for (const [key, got] of [['feed_moves', facts.feedMoves], ['z_feed_moves', facts.zFeedMoves], ['dwell_blocks', facts.dwellBlocks]]) {
+    if (key in checks && got !== checks[key]) out.push(`program: ${key} ${got}, want ${checks[key]}`);
+  }
+  if ('min_x' in checks && !(Math.abs(facts.minX - checks.min_x) <= 0.5 * step * (1 + 1e-9))) {
+    out.push(`program: min X ${facts.minX}, want ${checks.min_x} within ${0.5 * step}`);
+  }
+  for (const [key, got] of [['x_feed_travel', facts.xTravel], ['z_feed_travel', facts.zTravel]]) {
+    const bound = facts.feedMoves * step;
+    if (key in checks && !(Math.abs(got - checks[key]) <= bound)) out.push(`program: ${key} ${got}, want ${checks[key]} within ${bound}`);
+  }
+}
+
 function checkProgram(checks, body, request, out) {
   if (typeof body.program !== 'string') return out.push('/program: missing');
   const perLoop = body.blocks_per_loop;
@@ -231,6 +295,7 @@ function checkProgram(checks, body, request, out) {
   if ('g95_flat_F' in checks && !facts.g95F.has(checks.g95_flat_F)) out.push(`program: G95 F words ${[...facts.g95F]}, want ${checks.g95_flat_F}`);
   if ('g94_F' in checks && facts.g94F !== checks.g94_F) out.push(`program: G94 F ${facts.g94F}, want ${checks.g94_F}`);
   if ('last_C' in checks && facts.lastC !== checks.last_C) out.push(`program: last C ${facts.lastC}, want ${checks.last_C}`);
+  checkLatheProgram(checks, body, out);
   return out;
 }
 
