@@ -1,7 +1,8 @@
 // Acceptance of the grooving-cycle programs (spec grooving-cycle.md sections 5.3 and 5.4): for
 // every reference case of next/grooving-cycle.json that answers 200, in every dialect and unit,
 // the program as the service writes it (the api handler, the same path as HTTP):
-//  - translated to LinuxCNC (section 5.4) is accepted by rs274 -g (a tool table with tools 1-99);
+//  - follows the dialect's text rules (support/program_text_rules.h) and, translated to LinuxCNC
+//    (section 5.4), is accepted by rs274 -g (a tool table with tools 1-99);
 //  - has feed_moves = N + 2 G1 blocks (and STRAIGHT_FEED calls), z_feed_moves = shifts of them
 //    with a Z word, its smallest printed X = Db, sum |dX| over G1 = D_a - Db and sum |dZ| =
 //    shifts x X2 (program units, within feed_moves x 10^-decimals), one DWELL of the printed
@@ -33,6 +34,7 @@
 #include "domain/grooving/revolution_time.h"
 #include "gcode/program_text.h"
 #include "gcode/rs274_runner.h"
+#include "support/program_text_rules.h"
 
 namespace {
 
@@ -125,6 +127,8 @@ Written write_and_run(const json& request, const std::string& dialect) {
     return out;
   }
   out.body = both->json;
+  EXPECT_EQ(both->json.at("program"), both->text);
+  cutcalc::testing::expect_text_rules(both->text, dialect);
   out.linuxcnc = translate_to_linuxcnc(both->text, dialect);
   const Rs274Run run = run_rs274_with_tools(out.linuxcnc, tool_table());
   EXPECT_TRUE(run.started) << run.spawn_error;
