@@ -67,25 +67,25 @@ TEST(RouteTable, EveryRouteHasItsOpenApiPathReferenceFilesPlotFieldAndPageSectio
 
 TEST(RouteTable, ARouteLackingItsPathReferenceFileOrPageIsNamed) {
   const std::array routes = {
-      api::CalculationRoute{.path = "/v1/grooving/cycle",
+      api::CalculationRoute{.path = "/v1/thread-milling",
                             .handler = nullptr,
                             .forms = api::AnswerForms::json_and_plain_text_program,
                             .plot = {"include_profile", "true", ""},
-                            .reference_files = {"grooving-cycle.json"},
-                            .page_section = "grooving"}};
+                            .reference_files = {"thread-milling.json"},
+                            .page_section = "thread"}};
   const auto problems = test_support::route_table_problems(project_inputs(routes));
-  EXPECT_TRUE(mentions(problems, "/v1/grooving/cycle: no POST /v1/grooving/cycle in openapi.yaml"))
+  EXPECT_TRUE(mentions(problems, "/v1/thread-milling: no POST /v1/thread-milling in openapi.yaml"))
       << joined(problems);
-  EXPECT_TRUE(mentions(problems, "grooving-cycle.json does not exist")) << joined(problems);
-  EXPECT_TRUE(mentions(problems, "no <section id=\"grooving\">")) << joined(problems);
-  EXPECT_TRUE(mentions(problems, "no nav link to #grooving")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "thread-milling.json does not exist")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "no <section id=\"thread\">")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "no nav link to #thread")) << joined(problems);
 }
 
 TEST(RouteTable, AnOpenApiCalculationPathWithoutARouteIsNamed) {
   RouteTableInputs inputs = project_inputs(api::calculation_routes());
-  inputs.openapi["paths"]["/v1/grooving/cycle"] = inputs.openapi["paths"]["/v1/main-time"];
+  inputs.openapi["paths"]["/v1/thread-milling"] = inputs.openapi["paths"]["/v1/main-time"];
   const auto problems = test_support::route_table_problems(inputs);
-  EXPECT_TRUE(mentions(problems, "/v1/grooving/cycle: in openapi.yaml, not in the route table"))
+  EXPECT_TRUE(mentions(problems, "/v1/thread-milling: in openapi.yaml, not in the route table"))
       << joined(problems);
   EXPECT_EQ(problems.size(), 1U) << joined(problems);
 }
