@@ -536,18 +536,147 @@ std::optional<std::string> bad_program_text(std::string_view program) {
   return std::nullopt;
 }
 
+// The words of a block (split at single spaces; an empty word stays, and is refused).
+std::vector<std::string_view> block_words(std::string_view line) {
+  std::vector<std::string_view> words;
+  std::size_t begin = 0;
+  while (begin <= line.size()) {
+    std::size_t end = line.find(' ', begin);
+    if (end == std::string_view::npos) end = line.size();
+    words.push_back(line.substr(begin, end - begin));
+    begin = end + 1;
+  }
+  return words;
+}
+
+bool is_whole(std::string_view text) {
+  return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+  });
+}
+
+// A real number with its decimal point, never -0.
+bool is_real(std::string_view text) {
+  const bool negative = starts_with(text, "-");
+  if (negative) text.remove_prefix(1);
+  const auto dot = text.find('.');
+  if (dot == std::string_view::npos || !is_whole(text.substr(0, dot)) ||
+      !is_whole(text.substr(dot + 1))) {
+    return false;
+  }
+  return !negative || text.find_first_not_of("0.") != std::string_view::npos;
+}
+
+// A real number (whole for fanuc S) that does not print as zero: F, S, D/LIMS/G50, dwell
+// seconds (grooving-cycle.md 5.1: such a program is a 422, never a 200).
+bool is_positive_value(std::string_view text, bool whole) {
+  return (whole ? is_whole(text) : is_real(text) && !starts_with(text, "-")) &&
+         text.find_first_not_of("0.") != std::string_view::npos;
+}
+
+// A lathe block (grooving-cycle.md section 5.2, the writer of domain/program/lathe_program.h)
+// that is not one of the dialect's literal forms; nullopt when it is. The tool call, spindle
+// and dwell blocks are checked whole; every other block has the words G X Z F S M in that order
+// (G and M whole numbers, X Z F real, no Y I J C H T D P), sinumerik's modal DIAMON among the
+// G words, one M word.
+std::optional<std::string> bad_lathe_block(std::string_view line, bool fanuc, bool sinumerik) {
+  const std::vector<std::string_view> w = block_words(line);
+  const auto value = [](std::string_view word) { return word.substr(1); };
+  const auto tool = [&](std::string_view word) {
+    return word.size() >= 2 && word[0] == 'T' && is_whole(value(word)) &&
+           std::stoi(std::string(value(word))) >= 1 && std::stoi(std::string(value(word))) <= 99;
+  };
+  const std::string_view spindle_on = fanuc ? "M03" : "M3";
+  const std::string_view spindle_ccw = fanuc ? "M04" : "M4";
+  const auto spindle_word = [&](std::string_view word) {
+    return word == spindle_on || word == spindle_ccw;
+  };
+  if (!w.empty() && starts_with(w[0], "T")) {
+    if (fanuc) {  // T{tt}{tt}: tool and offset, the same number
+      const bool ok = w.size() == 1 && w[0].size() == 5 && is_whole(value(w[0])) &&
+                      w[0].substr(1, 2) == w[0].substr(3, 2) &&
+                      tool("T" + std::string(w[0].substr(1, 2)));
+      return ok ? std::nullopt : std::optional<std::string>("not the fanuc tool call T{tt}{tt}");
+    }
+    const bool ok = sinumerik ? w.size() == 2 && tool(w[0]) && w[1] == "D1"
+                              : w.size() == 3 && tool(w[0]) && w[1] == "M6" && w[2] == "G43";
+    return ok ? std::nullopt : std::optional<std::string>("not the dialect's tool call");
+  }
+  if (!w.empty() && (w[0] == "G96" || w[0] == "G97" || w[0] == "G50")) {
+    const bool s_whole = fanuc;
+    bool ok = false;
+    if (w[0] == "G50") {
+      ok = fanuc && w.size() == 2 && starts_with(w[1], "S") && is_positive_value(value(w[1]), true);
+    } else if (w[0] == "G97") {
+      ok = w.size() == 3 && starts_with(w[1], "S") && is_positive_value(value(w[1]), s_whole) &&
+           spindle_word(w[2]);
+    } else if (fanuc) {  // G96 S{v} M03, its limit in the G50 block before
+      ok = w.size() == 3 && starts_with(w[1], "S") && is_positive_value(value(w[1]), true) &&
+           spindle_word(w[2]);
+    } else if (sinumerik) {  // G96 S{v} LIMS={n_max} M3
+      ok = w.size() == 4 && starts_with(w[1], "S") && is_positive_value(value(w[1]), false) &&
+           starts_with(w[2], "LIMS=") && is_positive_value(w[2].substr(5), false) &&
+           spindle_word(w[3]);
+    } else {  // G96 D{n_max} S{v} M3
+      ok = w.size() == 4 && starts_with(w[1], "D") && is_positive_value(value(w[1]), false) &&
+           starts_with(w[2], "S") && is_positive_value(value(w[2]), false) && spindle_word(w[3]);
+    }
+    return ok ? std::nullopt
+              : std::optional<std::string>("not the dialect's spindle block, or a zero in it");
+  }
+  if (!w.empty() && (w[0] == "G4" || w[0] == "G04")) {
+    const char letter = fanuc ? 'X' : sinumerik ? 'F' : 'P';
+    const bool ok = w[0] == (fanuc ? "G04" : "G4") && w.size() == 2 && !w[1].empty() &&
+                    w[1][0] == letter && is_positive_value(value(w[1]), false);
+    return ok ? std::nullopt
+              : std::optional<std::string>("not the dialect's dwell block, or a zero dwell");
+  }
+  constexpr std::string_view kOrder = "GXZFSM";
+  std::size_t previous_rank = 0;
+  std::size_t m_words = 0;
+  for (const std::string_view word : w) {
+    if (sinumerik && word == "DIAMON" && previous_rank == 0) continue;
+    const std::size_t rank = word.empty() ? std::string_view::npos : kOrder.find(word.front());
+    if (rank == std::string_view::npos || rank < previous_rank) {
+      return "a word out of G X Z F S M or of that order: \"" + std::string(word) + "\"";
+    }
+    previous_rank = rank;
+    m_words += word.front() == 'M' ? 1 : 0;
+    const bool whole_word =
+        word.front() == 'G' || word.front() == 'M' || (fanuc && word.front() == 'S');
+    if (whole_word ? !is_whole(value(word)) : !is_real(value(word))) {
+      return "a malformed number: " + std::string(word);
+    }
+    if (fanuc && (word.front() == 'G' || word.front() == 'M') && word.size() == 2) {
+      return "a one-digit fanuc G or M word: " + std::string(word);
+    }
+    if (word.front() == 'F' && !is_positive_value(value(word), false)) {
+      return "a feed that prints as zero: " + std::string(word);
+    }
+  }
+  if (m_words > 1) return std::string("more than one M word in a block");
+  return std::nullopt;
+}
+
+// A lathe program: its modal block selects the XZ plane (every milling program has G17).
+bool is_lathe_program(std::string_view program) {
+  return program.find("\nG18 ") != std::string_view::npos ||
+         program.find(" G18 ") != std::string_view::npos;
+}
+
 // The rules of spec programs.md section 3 for a pass program in any dialect: ASCII lines; comments
 // `( ... )` (linuxcnc, fanuc: closed, nothing nested) or `; ...` (sinumerik); code words
 // `<letter><value>` in the order G X Y Z I J C H F S T D M, one M word per block; G M H T D whole
 // numbers, every other letter a real number with a decimal point (fanuc S: a whole number), never
 // -0; `%` first and last (linuxcnc, fanuc) or nowhere (sinumerik); fanuc's `O{4 digits} (NAME)`
-// its only O word.
+// its only O word. A lathe program (G18) has its own block rules: bad_lathe_block.
 std::optional<std::string> bad_dialect_program_text(std::string_view program) {
   if (auto why = bad_ascii_lines(program)) {
     return why;
   }
   const bool sinumerik = starts_with(program, "; ");
   const bool fanuc = starts_with(program, "%\nO");
+  const bool lathe = is_lathe_program(program);
   if (sinumerik ? program.find('%') != std::string_view::npos
                 : !starts_with(program, "%\n") || !ends_with(program, "\nM30\n%\n")) {
     return std::string("the program's % lines are wrong for its dialect");
@@ -579,6 +708,10 @@ std::optional<std::string> bad_dialect_program_text(std::string_view program) {
           text.find_first_of("();%") != std::string_view::npos) {
         return where + "a comment that breaks the dialect's comment rules";
       }
+      continue;
+    }
+    if (lathe) {
+      if (auto why = bad_lathe_block(line, fanuc, sinumerik)) return where + *why;
       continue;
     }
     constexpr std::string_view kOrder = "GXYZIJCHFSTDM";
@@ -674,8 +807,8 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
     if (auto why = problem_shape(body, status)) {
       return why;
     }
-  } else if (path == "/v1/main-time/program" && body.contains("program") &&
-             body["program"].is_string()) {
+  } else if ((path == "/v1/main-time/program" || path == "/v1/grooving/cycle") &&
+             body.contains("program") && body["program"].is_string()) {
     if (auto why = bad_dialect_program_text(body["program"].get<std::string>())) {
       return "the JSON answer's program: " + *why;
     }

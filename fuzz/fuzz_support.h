@@ -56,8 +56,9 @@ std::optional<std::string> negative_length(const nlohmann::json& body);
 // comment is closed on its line and no word outside comments is written as nan or inf.
 std::optional<std::string> bad_program_text(std::string_view program);
 
-// What is wrong with a pass program (POST /v1/main-time/program) in any dialect, against the text
-// rules of spec programs.md section 3; nullopt when nothing is.
+// What is wrong with a pass program (POST /v1/main-time/program) or a lathe program (POST
+// /v1/grooving/cycle) in any dialect, against the text rules of spec programs.md section 3 and
+// grooving-cycle.md section 5.2; nullopt when nothing is.
 std::optional<std::string> bad_dialect_program_text(std::string_view program);
 
 }  // namespace cutcalc::fuzz

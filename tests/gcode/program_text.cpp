@@ -1,5 +1,6 @@
 #include "gcode/program_text.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <sstream>
@@ -38,11 +39,47 @@ std::string without_comment(const std::string& line, std::string_view dialect) {
   return out;
 }
 
+std::vector<std::string> words_in(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> words;
+  std::string word;
+  while (in >> word) words.push_back(word);
+  return words;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& word : words) {
+    if (!out.empty()) out.push_back(' ');
+    out.append(word);
+  }
+  return out;
+}
+
+bool contains(const std::vector<std::string>& words, std::string_view word) {
+  return std::find(words.begin(), words.end(), word) != words.end();
+}
+
+// A word from its letter and number (not `"P" + rest`: GCC 12 warns -Wrestrict on it).
+std::string with_letter(char letter, std::string_view number) {
+  std::string word(1, letter);
+  word.append(number);
+  return word;
+}
+
+// fanuc lathe `T0707`: tool 07 with offset 07 (a milling T word has no offset digits).
+bool is_turret_tool_word(const std::string& word) {
+  return word.size() == 5 && word[0] == 'T' &&
+         std::all_of(word.begin() + 1, word.end(),
+                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+}
+
 }  // namespace
 
 std::string translate_to_linuxcnc(std::string_view program, std::string_view dialect) {
   if (dialect == "linuxcnc") return std::string(program);
   std::string out;
+  std::string lathe_clamp;  // fanuc `G50 S{m}`, waiting for its G96 block
   for (const std::string& line : lines_of(program)) {
     if (dialect == "fanuc") {
       if (!line.empty() && line[0] == 'O') continue;
@@ -50,14 +87,33 @@ std::string translate_to_linuxcnc(std::string_view program, std::string_view dia
         out.append(line).append("\n");
         continue;
       }
-      std::istringstream words(line);
-      std::string word;
-      std::string translated;
-      while (words >> word) {
-        if (!translated.empty()) translated.push_back(' ');
-        translated.append(short_word(word));
+      std::vector<std::string> block = words_in(line);
+      for (std::string& word : block) word = short_word(word);
+      if (block.size() == 2 && block[0] == "G50" && block[1][0] == 'S') {
+        lathe_clamp = block[1].substr(1);  // into the next G96 block as D
+        continue;
       }
-      out.append(translated).append("\n");
+      std::vector<std::string> translated;
+      const bool dwell = contains(block, "G4");
+      for (const std::string& word : block) {
+        if (word == "G99") {  // lathe feed per revolution; X words are diameters (G7)
+          translated.emplace_back("G7");
+          translated.emplace_back("G95");
+        } else if (dwell && word[0] == 'X') {
+          translated.push_back(with_letter('P', word.substr(1)));
+        } else if (is_turret_tool_word(word)) {
+          translated.push_back(with_letter('T', std::to_string(std::stoi(word.substr(1, 2)))));
+          translated.emplace_back("M6");
+          translated.emplace_back("G43");
+        } else if (word == "G96" && !lathe_clamp.empty()) {
+          translated.push_back(word);
+          translated.push_back(with_letter('D', lathe_clamp));
+          lathe_clamp.clear();
+        } else {
+          translated.push_back(word);
+        }
+      }
+      out.append(joined(translated)).append("\n");
       continue;
     }
     // sinumerik
@@ -66,16 +122,29 @@ std::string translate_to_linuxcnc(std::string_view program, std::string_view dia
       continue;
     }
     if (line == "D1" || line == "D0") continue;
-    std::istringstream words(line);
-    std::string word;
-    std::string translated;
-    while (words >> word) {
-      if (word == "G710") word = "G21";
-      if (word == "G700") word = "G20";
-      if (!translated.empty()) translated.push_back(' ');
-      translated.append(word);
+    const std::vector<std::string> block = words_in(line);
+    const bool dwell = contains(block, "G4");
+    const bool tool_call = !block.empty() && block[0][0] == 'T';
+    std::vector<std::string> translated;
+    for (const std::string& word : block) {
+      if (word == "G710") {
+        translated.emplace_back("G21");
+      } else if (word == "G700") {
+        translated.emplace_back("G20");
+      } else if (word == "DIAMON") {
+        translated.emplace_back("G7");
+      } else if (word.rfind("LIMS=", 0) == 0) {
+        translated.push_back(with_letter('D', word.substr(5)));
+      } else if (dwell && word[0] == 'F') {
+        translated.push_back(with_letter('P', word.substr(1)));
+      } else if (tool_call && word == "D1") {  // lathe `T7 D1`: the tool and its offset
+        translated.emplace_back("M6");
+        translated.emplace_back("G43");
+      } else {
+        translated.push_back(word);
+      }
     }
-    out.append(translated).append("\n");
+    out.append(joined(translated)).append("\n");
   }
   return out;
 }

@@ -11,6 +11,9 @@ namespace cutcalc::test::gcode {
 
 // fanuc -> linuxcnc: the O line dropped, two-digit G and M words shortened (G01 -> G1, M03 -> M3);
 // sinumerik -> linuxcnc: `;` comments -> `( )`, G710/G700 -> G21/G20, D1/D0 dropped.
+// The lathe forms (grooving-cycle.md section 5.4): fanuc G99 -> G7 G95, `G50 S{m}` dropped and
+// D{m} written into the next G96 block, G4 X -> G4 P, T{tt}{oo} -> T{tt} M6 G43; sinumerik
+// DIAMON -> G7, LIMS= -> D, G4 F -> G4 P, `T{t} D1` -> T{t} M6 G43.
 // `dialect` is "linuxcnc" (returned as it is), "fanuc" or "sinumerik".
 std::string translate_to_linuxcnc(std::string_view program, std::string_view dialect);
 

@@ -73,7 +73,10 @@ std::string rs274_executable() {
 #endif
 }
 
-Rs274Run run_rs274(const std::string& program_text, const std::string& executable, int timeout_s) {
+namespace {
+
+Rs274Run run_in_temp_dir(const std::string& program_text, const std::string& executable,
+                         int timeout_s, const std::string* tool_table) {
   Rs274Run run;
   const TempDir dir;
   if (dir.path().empty()) {
@@ -84,7 +87,9 @@ Rs274Run run_rs274(const std::string& program_text, const std::string& executabl
   const std::string ini = dir.path() + "/strict.ini";
   const std::string out = dir.path() + "/stdout.txt";
   const std::string err = dir.path() + "/stderr.txt";
-  if (!write_file(ngc, program_text) || !write_file(ini, kStrictIni)) {
+  const std::string tbl = dir.path() + "/tool.tbl";
+  if (!write_file(ngc, program_text) || !write_file(ini, kStrictIni) ||
+      (tool_table != nullptr && !write_file(tbl, *tool_table))) {
     run.spawn_error = "cannot write into " + dir.path();
     return run;
   }
@@ -98,7 +103,13 @@ Rs274Run run_rs274(const std::string& program_text, const std::string& executabl
   // gets its own, or parallel test processes race on one file.
   posix_spawn_file_actions_addchdir_np(&actions, dir.path().c_str());
 
-  std::vector<std::string> args = {executable, "-i", ini, "-g", ngc};
+  std::vector<std::string> args = {executable, "-i", ini};
+  if (tool_table != nullptr) {
+    args.emplace_back("-t");
+    args.push_back(tbl);
+  }
+  args.emplace_back("-g");
+  args.push_back(ngc);
   std::vector<char*> argv;
   for (auto& arg : args) argv.push_back(arg.data());
   argv.push_back(nullptr);
@@ -149,6 +160,16 @@ Rs274Run run_rs274(const std::string& program_text, const std::string& executabl
   run.output = read_file(out);
   run.errors = read_file(err);
   return run;
+}
+
+}  // namespace
+
+Rs274Run run_rs274(const std::string& program_text, const std::string& executable, int timeout_s) {
+  return run_in_temp_dir(program_text, executable, timeout_s, nullptr);
+}
+
+Rs274Run run_rs274_with_tools(const std::string& program_text, const std::string& tool_table) {
+  return run_in_temp_dir(program_text, rs274_executable(), 120, &tool_table);
 }
 
 }  // namespace cutcalc::test::gcode

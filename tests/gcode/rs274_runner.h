@@ -27,4 +27,8 @@ std::string rs274_executable();
 Rs274Run run_rs274(const std::string& program_text,
                    const std::string& executable = rs274_executable(), int timeout_s = 120);
 
+// The same with a tool table (`-t tool.tbl`, LinuxCNC format: `T7 P7 ;`), for programs that
+// change tools (`T7 M6`): rs274 refuses a tool the table lacks.
+Rs274Run run_rs274_with_tools(const std::string& program_text, const std::string& tool_table);
+
 }  // namespace cutcalc::test::gcode

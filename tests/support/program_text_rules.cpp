@@ -63,10 +63,12 @@ void expect_text_rules(const std::string& program, const std::string& dialect) {
                                     [](const std::string& l) { return l.rfind('G', 0) == 0; });
     ASSERT_NE(units, lines.end());
     EXPECT_TRUE(*units == "G21" || *units == "G20") << "the units alone, first: " << *units;
-    if (program.find(" M03\n") != std::string::npos) {
-      // Milling: S{n} M03; lathe: G96 S{v} M03 / G97 S{n} M03 (grooving-cycle.md 5.2).
+    if (program.find(" M03\n") != std::string::npos) {  // milling `S{n} M03`, lathe `G9x S{n} M03`
       EXPECT_TRUE(std::regex_search(program, std::regex(R"(\n(G9[67] )?S[0-9]+ M03\n)")))
           << "integer S";
+    }
+    if (program.find("\nG50 ") != std::string::npos) {  // the lathe spindle limit
+      EXPECT_TRUE(std::regex_search(program, std::regex(R"(\nG50 S[0-9]+\n)"))) << "integer G50 S";
     }
     std::string code;  // the blocks, without the comment lines
     for (const std::string& line : lines) {
