@@ -132,6 +132,19 @@ constexpr std::array kCatalogue{
           "larger feed_per_rev_mm",
           "цикл занял бы более {maximum} оборотов (по кадру программы на каждый): увеличьте "
           "feed_per_rev_mm"},
+    Entry{ErrorCode::flat_outside_part,
+          "the flat must lie inside the part: depth and axis distance below the radius, width and "
+          "across-flats size below the diameter",
+          "лыска должна лежать внутри детали: глубина и расстояние от оси меньше радиуса, ширина и "
+          "размер под ключ меньше диаметра"},
+    Entry{ErrorCode::tolerance_unmet,
+          "no number of steps up to 1000 keeps the flatness within this tolerance",
+          "ни одно число шагов до 1000 не обеспечивает эту плоскостность"},
+    Entry{ErrorCode::too_many_cut_blocks,
+          "the program would have more than {maximum} cutting blocks: use fewer steps, flats or "
+          "layers",
+          "программа содержала бы более {maximum} рабочих кадров: уменьшите число шагов, лысок "
+          "или слоёв"},
     Entry{ErrorCode::required, "is required", "обязательное поле"},
     Entry{ErrorCode::required_choice, "is required (one of: {allowed})",
           "обязательное поле (одно из: {allowed})"},
@@ -179,6 +192,13 @@ constexpr std::array kCatalogue{
           "не должно начинаться с {prefix} (зарезервировано в sinumerik)"},
     Entry{ErrorCode::program_needs_straight_path, "must be 0 (a program needs a straight path)",
           "должно быть 0 (программе нужен прямолинейный путь)"},
+    Entry{ErrorCode::dialect_unsupported,
+          "this program has no form for this control yet (one of: {allowed})",
+          "для этой системы ЧПУ эта программа пока не пишется (одна из: {allowed})"},
+    Entry{ErrorCode::at_least_one_field, "give at least one of {fields}",
+          "задайте хотя бы одно из {fields}"},
+    Entry{ErrorCode::needs_several_flats, "is only defined for two or more flats (flats >= 2)",
+          "определено только для двух и более лысок (flats >= 2)"},
     Entry{ErrorCode::empty_body, "the request body is empty; send a JSON object",
           "тело запроса пустое; отправьте объект JSON"},
     Entry{ErrorCode::duplicate_key, "duplicate key \"{key}\" in an object",

@@ -8,6 +8,7 @@
 #include "api/entry/main_time_program_endpoint.h"
 #include "api/grooving/grooving_cycle_endpoint.h"
 #include "api/kinematics/resultant_speeds_endpoint.h"
+#include "api/lathe_flat/lathe_flat_endpoint.h"
 #include "api/polygon/polygon_hole_endpoint.h"
 #include "api/roughness/bore_milling_endpoint.h"
 #include "api/roughness/groove_wall_endpoint.h"
@@ -59,6 +60,10 @@ std::span<const CalculationRoute> calculation_routes() {
                        .forms = json_and_plain_text_program,
                        .reference_files = {"next/grooving-cycle.json"},
                        .page_section = "grooving"},
+      CalculationRoute{.path = "/v1/lathe-flat",
+                       .handler = &lathe_flat::handle_lathe_flat,
+                       .forms = json_and_plain_text_program,
+                       .reference_files = {"next/lathe-flat.json"}},
   };
   return routes;
 }

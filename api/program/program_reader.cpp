@@ -122,11 +122,17 @@ model::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind)
   ObjectReader in = root.object("program", false);
   model::ProgramOptions options;
   options.dialect = read_dialect(in);
+  if (kind == ProgramKind::lathe_flat && options.dialect == model::Dialect::fanuc) {
+    in.add_error("dialect", ErrorCode::dialect_unsupported,
+                 {{"allowed", {"linuxcnc", "sinumerik"}}});
+  }
   options.units =
       in.optional_choice("units", {"mm", "inch"}) == "inch" ? model::Units::inch : model::Units::mm;
   read_identity(in, options);
-  read_tool_and_machine_state(in, kind, options);
-  read_motion(in, kind, options);
+  if (kind != ProgramKind::lathe_flat) {
+    read_tool_and_machine_state(in, kind, options);
+    read_motion(in, kind, options);
+  }
   in.reject_unknown_fields();
   return options;
 }

@@ -17,6 +17,8 @@ enum class ProgramKind {
   polygon,       // POST /v1/polygon-hole/gcode: no clearance, plunge feed or rapid rate
   lathe,         // lathe programs (grooving-cycle.md 2): tools 1..99 on a turret, no length
                  // offset word, no safe Z or clearance
+  lathe_flat,    // the lathe flat (lathe-flat.md 2): dialect, units, decimals, name and program
+                 // number only; no Fanuc form yet (section 6.4)
 };
 
 // The `program` object of `root` (absent: every default of `kind`).

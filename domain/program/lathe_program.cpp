@@ -44,6 +44,7 @@ class LatheWriter {
     std::string out;
     if (to.x_diameter_mm) out.append(" X").append(length(*to.x_diameter_mm));
     if (to.z_mm) out.append(" Z").append(length(*to.z_mm));
+    if (to.c_deg) out.append(" C").append(format_fixed(*to.c_deg, decimals_));
     return out;
   }
 
@@ -64,12 +65,20 @@ class LatheWriter {
   void block(const LatheRapid& rapid) { line(std::string(words_.rapid) + point(rapid.to)); }
   void block(const LatheFeed& feed) {
     std::string text = std::string(words_.feed) + point(feed.to);
-    const std::string f = checked("F", length(feed.feed_mm_per_rev));
+    const std::string f = checked("F", length(feed.feed_mm));
     if (f != last_feed_) {
       text.append(" F").append(f);
       last_feed_ = f;
     }
     line(text);
+  }
+  void block(const FeedModeChange& change) {
+    line(change.mode == FeedMode::inverse_time ? "G93" : "G94");
+    last_feed_.clear();
+  }
+  void block(const InverseTimeFeed& feed) {
+    line(std::string(words_.feed) + point(feed.to) + " F" +
+         checked("F", format_fixed(feed.per_minute, decimals_)));
   }
   void block(const ConstantSpindleSpeed& spindle) {
     const std::string s = options_.dialect == Dialect::fanuc

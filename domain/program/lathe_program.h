@@ -18,15 +18,30 @@
 namespace cutcalc::domain::program {
 
 struct LathePoint {
+  LathePoint() = default;
+  // Most lathe moves have no C word: {x, z} names them.
+  LathePoint(std::optional<double> x, std::optional<double> z,
+             std::optional<double> c = std::nullopt)
+      : x_diameter_mm(x), z_mm(z), c_deg(c) {}
+
   std::optional<double> x_diameter_mm;  // X word: a diameter
   std::optional<double> z_mm;
+  std::optional<double> c_deg;  // C word: the spindle as a rotary axis, degrees, never wrapped
 };
 struct LatheRapid {  // G0
   LathePoint to;
 };
-struct LatheFeed {  // G1, F per revolution
+struct LatheFeed {  // G1 with F in mm per revolution (G95) or per minute (G94), as the mode is
   LathePoint to;
-  double feed_mm_per_rev = 0.0;
+  double feed_mm = 0.0;
+};
+enum class FeedMode { per_minute, inverse_time };
+struct FeedModeChange {  // G94 / G93; the next feed block writes its F again
+  FeedMode mode = FeedMode::per_minute;
+};
+struct InverseTimeFeed {  // G1 under G93: F = 1/T per minute, in every block
+  LathePoint to;
+  double per_minute = 0.0;
 };
 struct ConstantSpindleSpeed {  // G97 S{n} M3
   double rpm = 0.0;
@@ -39,8 +54,9 @@ struct Dwell {  // G4 with the time in seconds (P / X / F)
   double seconds = 0.0;
 };
 
-using LatheBlock = std::variant<LatheRapid, LatheFeed, ConstantSpindleSpeed, ConstantSurfaceSpeed,
-                                Dwell, SpindleOff, CoolantOn, CoolantOff>;
+using LatheBlock =
+    std::variant<LatheRapid, LatheFeed, FeedModeChange, InverseTimeFeed, ConstantSpindleSpeed,
+                 ConstantSurfaceSpeed, Dwell, SpindleOff, CoolantOn, CoolantOff>;
 
 // The modal line(s) after the name and comments, one form per dialect; "{units}" stands for the
 // dialect's units word (G21/G20, Sinumerik G710/G700). Each program states its own.
@@ -59,8 +75,9 @@ struct LatheProgram {
 // Dwell times are printed with 3 decimals in every dialect and unit (seconds).
 inline constexpr int kDwellDecimals = 3;
 
-// The whole text, LF line ends. Error word_prints_as_zero when an F, S, D, LIMS or G50 S value, or
-// a dwell, would print as zero (a control would stop the feed or the spindle, or reject the block).
+// The whole text, LF line ends. C words and inverse-time F are printed unconverted (degrees, 1/min)
+// with `decimals`. Error word_prints_as_zero when an F, S, D, LIMS or G50 S value, or a dwell,
+// would print as zero (a control would stop the feed or the spindle, or reject the block).
 Result<std::string> write_lathe_program(const LatheProgram& program, const ProgramOptions& options);
 
 // The Fanuc S words of a spindle block: integers (v and n round half up; n_max floors, never above

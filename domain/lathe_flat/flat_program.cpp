@@ -1,0 +1,76 @@
+#include "domain/lathe_flat/flat_program.h"
+
+#include <cctype>
+#include <numbers>
+
+#include "domain/program/lathe_program.h"
+
+namespace cutcalc::domain::lathe_flat {
+namespace {
+
+using namespace program;
+
+constexpr LatheModalLines kModalLines{
+    "{units} G18 G90 G40 G49 G80 G94 G7",
+    "{units}\nG18 G40 G80 G90 G94",  // the candidate form; refused by the API (section 6.4)
+    "G18 {units} G40 G90 G94 DIAMON",
+};
+
+double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
+
+std::string upper(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// F7, F22: flats outer, layers inner; each layer from its +alpha_e end.
+std::vector<LatheBlock> blocks(const LatheFlatParams& params, const LatheFlatResult& flat) {
+  const int n = flat.steps;
+  std::vector<LatheBlock> out;
+  out.reserve(static_cast<std::size_t>(flat.cut_blocks) + 6 * flat.layers * params.flats + 2);
+  out.emplace_back(LatheRapid{{2.0 * flat.clear_x_mm, params.z_mm, std::nullopt}});
+  for (int k = 0; k < params.flats; ++k) {
+    const double flat_offset_deg = -k * 360.0 / params.flats;
+    for (const FlatSection& layer : flat.layer_sections) {
+      const double alpha_e = engagement_half_angle_rad(layer);
+      out.emplace_back(
+          LatheRapid{{std::nullopt, std::nullopt, flat_offset_deg + degrees(alpha_e)}});
+      out.emplace_back(
+          LatheFeed{{2.0 * tool_radius_position_mm(layer, alpha_e), std::nullopt, std::nullopt},
+                    params.feed_mm_per_min});
+      out.emplace_back(FeedModeChange{FeedMode::inverse_time});
+      for (int i = 1; i <= 2 * n; ++i) {
+        const double from = step_angle_rad(alpha_e, n, i - 1);
+        const double to = step_angle_rad(alpha_e, n, i);
+        const double block_min = chord_mm(layer, from, to) / params.feed_mm_per_min;  // T_i
+        out.emplace_back(InverseTimeFeed{
+            {2.0 * tool_radius_position_mm(layer, to), std::nullopt, flat_offset_deg + degrees(to)},
+            1.0 / block_min});
+      }
+      out.emplace_back(FeedModeChange{FeedMode::per_minute});
+      out.emplace_back(LatheRapid{{2.0 * flat.clear_x_mm, std::nullopt, std::nullopt}});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<FlatProgram> write_flat_program(const LatheFlatParams& params, const LatheFlatResult& flat,
+                                       const ProgramOptions& options) {
+  LatheProgram program;
+  program.modal = kModalLines;
+  program.comments = {"CUTCALC LATHE FLAT",
+                      "C AXIS: SPINDLE IN POSITION MODE AND DRIVEN TOOL RUNNING BEFORE THIS "
+                      "PROGRAM, NOT WRITTEN HERE"};
+  for (const Warning& warning : flat.warnings) {
+    program.comments.push_back("WARNING " + upper(warning_name(warning.code)));
+  }
+  program.blocks = blocks(params, flat);
+  auto text = write_lathe_program(program, options);
+  if (!text.ok()) return text.error();
+  return FlatProgram{std::move(text.value()), file_name(options)};
+}
+
+}  // namespace cutcalc::domain::lathe_flat
