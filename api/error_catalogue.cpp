@@ -145,6 +145,11 @@ constexpr std::array kCatalogue{
           "layers",
           "программа содержала бы более {maximum} рабочих кадров: уменьшите число шагов, лысок "
           "или слоёв"},
+    Entry{ErrorCode::flat_too_small,
+          "the flat (or a layer of it) is too shallow for this part to be computed: its plane "
+          "rounds to the part's surface",
+          "лыска (или её слой) слишком мелкая для этой детали: её плоскость при вычислении "
+          "совпадает с поверхностью детали"},
     Entry{ErrorCode::required, "is required", "обязательное поле"},
     Entry{ErrorCode::required_choice, "is required (one of: {allowed})",
           "обязательное поле (одно из: {allowed})"},

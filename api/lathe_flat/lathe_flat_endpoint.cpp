@@ -133,6 +133,7 @@ HandlerOutcome handle_lathe_flat(const nlohmann::json& body) {
   const std::string geometry_pointer = std::string("/") + geometry_field;
   const std::array pointers = {
       ErrorPointer{domain::ErrorCode::flat_outside_part, geometry_pointer},
+      ErrorPointer{domain::ErrorCode::flat_too_small, geometry_pointer},
       ErrorPointer{domain::ErrorCode::tolerance_unmet, "/flatness_tolerance_mm"},
   };
   const auto flat = model::compute_lathe_flat(params);

@@ -5,17 +5,17 @@
 
 namespace cutcalc::domain::lathe_flat {
 
-double engagement_half_angle_rad(const FlatSection& flat) {
+double depth_product_mm2(const FlatSection& flat) {
   const double r2 = flat.part_radius_mm;
   const double d = flat.axis_distance_mm;
-  return std::atan2(std::sqrt((r2 - d) * (r2 + d)), d);
+  return flat.depth_mm.value_or(r2 - d) * (r2 + d);
 }
 
-double flat_width_mm(const FlatSection& flat) {
-  const double r2 = flat.part_radius_mm;
-  const double d = flat.axis_distance_mm;
-  return 2.0 * std::sqrt((r2 - d) * (r2 + d));
+double engagement_half_angle_rad(const FlatSection& flat) {
+  return std::atan2(std::sqrt(depth_product_mm2(flat)), flat.axis_distance_mm);
 }
+
+double flat_width_mm(const FlatSection& flat) { return 2.0 * std::sqrt(depth_product_mm2(flat)); }
 
 double tool_radius_position_mm(const FlatSection& flat, double alpha_rad) {
   return (flat.axis_distance_mm + flat.tool_radius_mm) / std::cos(alpha_rad);

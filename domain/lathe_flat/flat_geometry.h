@@ -4,6 +4,7 @@
 // its engagement half-angle, the step points and the blocks between them. Units: mm, radians
 // inside (degrees only in the C words).
 
+#include <optional>
 #include <vector>
 
 namespace cutcalc::domain::lathe_flat {
@@ -13,7 +14,13 @@ struct FlatSection {
   double part_radius_mm = 0.0;    // R2
   double axis_distance_mm = 0.0;  // d
   double tool_radius_mm = 0.0;    // R
+  // t = R2 - d when known without cancellation (given, or from b): keeps (R2 - d)(R2 + d) exact
+  // for a flat shallow against the part.
+  std::optional<double> depth_mm{};
 };
+
+// (R2 - d)(R2 + d), from t when the section has it.
+double depth_product_mm2(const FlatSection& flat);
 
 // F2: alpha_e = atan2(sqrt((R2 - d)(R2 + d)), d), radians.
 double engagement_half_angle_rad(const FlatSection& flat);

@@ -60,10 +60,21 @@ Result<LatheFlatResult> compute_lathe_flat(const LatheFlatParams& p) {
   const double r2 = p.part_diameter_mm / 2.0;
   LatheFlatResult r;
   r.axis_distance_mm = d.value();
-  r.flat_depth_mm = r2 - r.axis_distance_mm;
+  // t = R2 - d loses every digit when the flat is tiny against the part: t as given, or from b.
+  if (p.flat_depth_mm) {
+    r.flat_depth_mm = *p.flat_depth_mm;
+  } else if (p.flat_width_mm) {
+    const double half = *p.flat_width_mm / 2.0;
+    r.flat_depth_mm = half * half / (r2 + r.axis_distance_mm);
+  } else {
+    r.flat_depth_mm = r2 - r.axis_distance_mm;
+  }
   r.across_flats_mm = 2.0 * r.axis_distance_mm;
-  const FlatSection final_flat{r2, r.axis_distance_mm, p.tool_radius_mm};
+  const FlatSection final_flat{r2, r.axis_distance_mm, p.tool_radius_mm, r.flat_depth_mm};
   const double alpha_e = engagement_half_angle_rad(final_flat);  // F2
+  if (!(r.flat_depth_mm > 0.0) || !(alpha_e > 0.0)) {
+    return make_error(ErrorCode::flat_too_small, "d rounds to R2");
+  }
   r.engagement_half_angle_deg = degrees(alpha_e);
   r.flat_width_mm = flat_width_mm(final_flat);  // F3
   r.face_width_mm = r.flat_width_mm;            // F4
@@ -89,7 +100,7 @@ Result<LatheFlatResult> compute_lathe_flat(const LatheFlatParams& p) {
   r.cut_blocks = static_cast<int>(blocks);
 
   for (const double t_j : r.layer_depths_mm) {
-    r.layer_sections.push_back({r2, r2 - t_j, p.tool_radius_mm});
+    r.layer_sections.push_back({r2, r2 - t_j, p.tool_radius_mm, t_j});
   }
   // F18: the start X grows with depth, so the final layer's is the largest.
   r.clear_x_mm = tool_radius_position_mm(final_flat, alpha_e) + p.clearance_mm;
@@ -102,6 +113,9 @@ Result<LatheFlatResult> compute_lathe_flat(const LatheFlatParams& p) {
         p.flats * (r.clear_x_mm - tool_radius_position_mm(layer, a_e)) / p.feed_mm_per_min;
     r.shortest_block_mm = std::min(r.shortest_block_mm, reach * std::tan(a_e / n));  // F20
   }
+  // Each layer's middle block is its shortest (F20): a zero one would be an infinite G93 F.
+  if (!(r.shortest_block_mm > 0.0))
+    return make_error(ErrorCode::flat_too_small, "a layer's d rounds to R2");
   r.machining_time_min = r.cut_time_min + r.approach_time_min;
   r.max_feed_by_block_rate_mm_per_min = 60000.0 * r.shortest_block_mm / p.block_time_ms;  // F21
   r.x_travel_mm = tool_radius_position_mm(final_flat, alpha_e) -

@@ -61,6 +61,7 @@ struct LatheFlatResult {
 };
 
 // F1-F21. Errors: flat_outside_part (t >= R2, d >= R2, s >= D or b >= D: the given one),
+// flat_too_small (a flat or layer so shallow against the part that d rounds to R2 in doubles),
 // tolerance_unmet (no N <= 1000 meets it), too_many_cut_blocks (over kMaxCutBlocks; limit).
 Result<LatheFlatResult> compute_lathe_flat(const LatheFlatParams& params);
 
