@@ -6,26 +6,14 @@
 #include <vector>
 
 #include "domain/grooving/grooving_cycle.h"
+#include "domain/grooving/grooving_settings.h"
 
 namespace cutcalc::domain::grooving {
 namespace {
 
-using program::WarningCode;
+constexpr auto paper = settings::paper_setting;
 
-// W 10.4, D0 220, depth 4.8, S0 0.12, X2 0.4; G96 v 86, n_max 1000 (section 7).
-GroovingCycleParams paper() {
-  GroovingCycleParams p;
-  p.groove_width_mm = 10.4;
-  p.start_diameter_mm = 220.0;
-  p.groove_depth_mm = 4.8;
-  p.groove_left_z_mm = -20.0;
-  p.shift_mm = 0.4;
-  p.feed_per_rev_mm = 0.12;
-  p.spindle = {std::nullopt, 86.0, 1000.0};
-  p.nose_radius_mm = 0.3;
-  p.minor_edge_angle_deg = 2.0;
-  return p;
-}
+using program::WarningCode;
 
 ErrorCode refusal(const GroovingCycleParams& p) {
   const auto result = compute_grooving_cycle(p);

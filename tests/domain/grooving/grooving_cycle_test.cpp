@@ -2,6 +2,7 @@
 // with values derived by hand from the equations or restated from the worked example (section 7).
 
 #include "domain/grooving/grooving_cycle.h"
+#include "domain/grooving/grooving_settings.h"
 
 #include <gtest/gtest.h>
 
@@ -11,36 +12,8 @@
 namespace cutcalc::domain::grooving {
 namespace {
 
-// Section 7: W 10.4, X2 0.4, D0 220, depth 4.8, S0 0.12, v 86 m/min, n_max 1000, rho 0.3,
-// phi1 2 deg, c 1, dwell 1 rev.
-GroovingCycleParams paper() {
-  GroovingCycleParams p;
-  p.groove_width_mm = 10.4;
-  p.start_diameter_mm = 220.0;
-  p.groove_depth_mm = 4.8;
-  p.groove_left_z_mm = -20.0;
-  p.shift_mm = 0.4;
-  p.feed_per_rev_mm = 0.12;
-  p.spindle = {std::nullopt, 86.0, 1000.0};
-  p.nose_radius_mm = 0.3;
-  p.minor_edge_angle_deg = 2.0;
-  return p;
-}
-
-// A small groove at constant speed: W 3, D0 50, S0 0.1, n 500 rpm, depth N * S0.
-GroovingCycleParams small(int revolutions) {
-  GroovingCycleParams p;
-  p.groove_width_mm = 3.0;
-  p.start_diameter_mm = 50.0;
-  p.groove_depth_mm = 0.1 * revolutions;
-  p.groove_left_z_mm = -10.0;
-  p.shift_mm = 0.4;
-  p.feed_per_rev_mm = 0.1;
-  p.spindle = {500.0, std::nullopt, std::nullopt};
-  p.nose_radius_mm = 0.4;
-  p.minor_edge_angle_deg = 3.0;
-  return p;
-}
+constexpr auto paper = settings::paper_setting;
+constexpr auto small = settings::small_groove;
 
 GroovingCycleResult computed(const GroovingCycleParams& p) {
   const auto result = compute_grooving_cycle(p);

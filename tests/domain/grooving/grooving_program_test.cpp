@@ -2,6 +2,7 @@
 // 5.2, the comment lines, the Fanuc rounding warning and the words that would print as zero.
 
 #include "domain/grooving/grooving_program.h"
+#include "domain/grooving/grooving_settings.h"
 
 #include <gtest/gtest.h>
 
@@ -12,26 +13,13 @@
 namespace cutcalc::domain::grooving {
 namespace {
 
+constexpr auto small = settings::small_groove;
+
 using program::Coolant;
 using program::Dialect;
 using program::ProgramOptions;
 using program::Units;
 using program::WarningCode;
-
-// W 3, X2 0.4, D0 50, depth N x 0.1 at S0 0.1, z_L -10, n 500 rpm (G97), dwell 1 rev.
-GroovingCycleParams small(int revolutions) {
-  GroovingCycleParams p;
-  p.groove_width_mm = 3.0;
-  p.start_diameter_mm = 50.0;
-  p.groove_depth_mm = 0.1 * revolutions;
-  p.groove_left_z_mm = -10.0;
-  p.shift_mm = 0.4;
-  p.feed_per_rev_mm = 0.1;
-  p.spindle = {500.0, std::nullopt, std::nullopt};
-  p.nose_radius_mm = 0.4;
-  p.minor_edge_angle_deg = 3.0;
-  return p;
-}
 
 GroovingCycleParams with_css(GroovingCycleParams p, double v, double n_max) {
   p.spindle = {std::nullopt, v, n_max};
