@@ -64,7 +64,37 @@ TEST(LatheFlatBadInput, RandomExtremeRequestsAreAnsweredSanely) {
     }
   }
   // Enough requests get through to check the answers, not only the refusals.
-  EXPECT_GT(answered, 40);
+  EXPECT_GT(answered, 40);  // 73 of the 300 with this seed
+}
+
+TEST(LatheFlatBadInput, FlatsThroughTheAxisAndOnHugePartsAreAnsweredSanely) {
+  // At the field bounds: a flat a hair off the axis (alpha_e -> 90 deg, tan ~ 1e16) with the
+  // largest feed, steps and tool; a 1 um flat on a 1 km part; a 12-gon of them by tolerance.
+  for (const json& request : {json{{"part_diameter_mm", 2},
+                                   {"flat_depth_mm", 0.9999999999999999},
+                                   {"steps", 1000},
+                                   {"feed_mm_per_min", 1e6}},
+                              json{{"part_diameter_mm", 2},
+                                   {"flat_width_mm", 1.9999999999999998},
+                                   {"steps", 1000},
+                                   {"feed_mm_per_min", 1e6},
+                                   {"tool_radius_mm", 5},
+                                   {"program", {{"decimals", 6}}}},
+                              json{{"part_diameter_mm", 1e6},
+                                   {"flat_depth_mm", 1e-6},
+                                   {"steps", 1000},
+                                   {"feed_mm_per_min", 1e6},
+                                   {"program", {{"units", "inch"}}}},
+                              json{{"part_diameter_mm", 1e6},
+                                   {"flat_depth_mm", 1e-6},
+                                   {"flats", 12},
+                                   {"flatness_tolerance_mm", 1e-6},
+                                   {"feed_mm_per_min", 1e6},
+                                   {"program", {{"dialect", "sinumerik"}, {"decimals", 6}}}}}) {
+    EXPECT_EQ(expect_sane_answer("/v1/lathe-flat", &api::lathe_flat::handle_lathe_flat, request),
+              200)
+        << request;
+  }
 }
 
 }  // namespace
