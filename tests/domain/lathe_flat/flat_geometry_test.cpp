@@ -36,12 +36,12 @@ TEST(FlatGeometry, AngleIsAccurateForAFlatThroughTheAxisAndAShallowOne) {
   // The atan2 form: 90 deg at d = 0 and small angles near d = R2 without the arccos cancellation.
   EXPECT_NEAR(engagement_half_angle_rad({10.0, 0.0, 0.0}), kPi / 2.0, 1e-15);
   EXPECT_NEAR(flat_width_mm({10.0, 0.0, 0.0}), 20.0, 1e-13);
-  const FlatSection shallow{10.0, 10.0 - 1e-10, 0.0};
+  const FlatSection shallow{10.0, 10.0 - 1e-11, 0.0};
   const double t = 10.0 - shallow.axis_distance_mm;  // exact (Sterbenz)
   const double half_width = std::sqrt(t * (20.0 - t));
   // arccos(d/R2) would lose ~5 digits here; asin of the half-chord over R2 does not.
-  EXPECT_NEAR(engagement_half_angle_rad(shallow), std::asin(half_width / 10.0), 1e-12 * 4.5e-6);
-  EXPECT_NEAR(flat_width_mm(shallow), 2.0 * half_width, 1e-12 * 9e-5);
+  EXPECT_NEAR(engagement_half_angle_rad(shallow), std::asin(half_width / 10.0), 1e-12 * 1.4e-6);
+  EXPECT_NEAR(flat_width_mm(shallow), 2.0 * half_width, 1e-12 * 2.8e-5);
 }
 
 TEST(FlatGeometry, ToolPositionTouchesTheFlatPlane) {

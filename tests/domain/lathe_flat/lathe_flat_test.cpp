@@ -145,6 +145,11 @@ TEST(LatheFlat, LayersAreEqualWithTheLastExactlyTheDepth) {
     EXPECT_NEAR(r.layer_depths_mm[static_cast<std::size_t>(j - 1)], j * 2.1 / 7.0, 1e-15) << j;
   }
   EXPECT_EQ(r.layer_depths_mm.back(), r.flat_depth_mm);
+  // t = 2.4 arrives as R2 - d = 2.4000000000000004: t/a = 6.000000000000001, still 6 layers.
+  p.flat_depth_mm = 2.4;
+  p.layer_depth_mm = 0.4;
+  EXPECT_EQ(computed(p).layers, 6);
+  p.flat_depth_mm = 2.1;
   // A remainder makes a layer more: a = 0.29 -> 8 equal layers.
   p.layer_depth_mm = 0.29;
   EXPECT_EQ(computed(p).layers, 8);
