@@ -42,10 +42,14 @@ Result<double> axis_distance(const LatheFlatParams& p) {
   return d;
 }
 
+// F17: L = ceil(t/a - 1e-9), at least 1; a double, since a very thin layer gives more layers than
+// an int holds (the block cap refuses those before any list is made).
+double layer_count(double t, const std::optional<double>& layer_depth_mm) {
+  return std::max(1.0, std::ceil(t / layer_depth_mm.value_or(t) - 1e-9));
+}
+
 // F17: L equal layers, t_j = j t / L, the last exactly t.
-std::vector<double> layer_depths(double t, const std::optional<double>& layer_depth_mm) {
-  const double a = layer_depth_mm.value_or(t);
-  const int layers = static_cast<int>(std::max(1.0, std::ceil(t / a - 1e-9)));
+std::vector<double> layer_depths(double t, int layers) {
   std::vector<double> depths;
   depths.reserve(static_cast<std::size_t>(layers));
   for (int j = 1; j <= layers; ++j) depths.push_back(j == layers ? t : j * t / layers);
@@ -92,12 +96,13 @@ Result<LatheFlatResult> compute_lathe_flat(const LatheFlatParams& p) {
   r.steps = p.steps ? *p.steps : r.steps_for_tolerance.value_or(1);
   const int n = r.steps;
 
-  r.layer_depths_mm = layer_depths(r.flat_depth_mm, p.layer_depth_mm);
-  r.layers = static_cast<int>(r.layer_depths_mm.size());
-  const double blocks = 2.0 * n * p.flats * r.layers;  // F19
+  const double layers = layer_count(r.flat_depth_mm, p.layer_depth_mm);
+  const double blocks = 2.0 * n * p.flats * layers;  // F19
   if (blocks > kMaxCutBlocks)
     return make_limit_error(ErrorCode::too_many_cut_blocks, kMaxCutBlocks);
   r.cut_blocks = static_cast<int>(blocks);
+  r.layers = static_cast<int>(layers);
+  r.layer_depths_mm = layer_depths(r.flat_depth_mm, r.layers);
 
   for (const double t_j : r.layer_depths_mm) {
     r.layer_sections.push_back({r2, r2 - t_j, p.tool_radius_mm, t_j});

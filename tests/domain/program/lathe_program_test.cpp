@@ -189,6 +189,52 @@ TEST(LatheProgramErrors, FeedSpindleAndDwellWordsThatPrintAsZeroAreRefused) {
   EXPECT_FALSE(refused(LatheRapid{{0.0, 0.0}}, linuxcnc));
 }
 
+TEST(LatheProgramRotary, CWordsAreDegreesUnconvertedAndNeverWrapped) {
+  // lathe-flat.md 6.3: C in degrees, absolute, with `decimals`; inch converts X only; no -0.
+  const std::vector<LatheBlock> blocks{LatheRapid{{std::nullopt, std::nullopt, 20.36413}},
+                                       LatheRapid{{50.8, std::nullopt, -380.5}},
+                                       LatheRapid{{std::nullopt, std::nullopt, -0.000001}}};
+  EXPECT_EQ(body_of(blocks, options_for(Dialect::linuxcnc)),
+            "G0 C20.3641\nG0 X50.8000 C-380.5000\nG0 C0.0000\n");
+  EXPECT_EQ(body_of(blocks, options_for(Dialect::linuxcnc, Units::inch)),
+            "G0 C20.36413\nG0 X2.00000 C-380.50000\nG0 C0.00000\n");
+  EXPECT_EQ(body_of(blocks, options_for(Dialect::sinumerik)),
+            "G0 C20.364\nG0 X50.800 C-380.500\nG0 C0.000\n");
+}
+
+TEST(LatheProgramRotary, InverseTimeBlocksCarryTheirOwnFeedUnconverted) {
+  // lathe-flat.md 6.1-6.3: every G93 block writes F = 1/T (per minute, not converted to inch),
+  // also when it repeats; G94 afterwards makes the next per-minute feed write its F again.
+  const std::vector<LatheBlock> blocks{LatheFeed{{32.0, std::nullopt}, 100.0},
+                                       FeedModeChange{FeedMode::inverse_time},
+                                       InverseTimeFeed{{31.6, std::nullopt, 10.0}, 187.5},
+                                       InverseTimeFeed{{30.0, std::nullopt, 0.0}, 187.5},
+                                       FeedModeChange{FeedMode::per_minute},
+                                       LatheFeed{{32.0, std::nullopt}, 100.0}};
+  EXPECT_EQ(body_of(blocks, options_for(Dialect::linuxcnc)),
+            "G1 X32.0000 F100.0000\nG93\nG1 X31.6000 C10.0000 F187.5000\n"
+            "G1 X30.0000 C0.0000 F187.5000\nG94\nG1 X32.0000 F100.0000\n");
+  EXPECT_EQ(body_of(blocks, options_for(Dialect::linuxcnc, Units::inch)),
+            "G1 X1.25984 F3.93701\nG93\nG1 X1.24409 C10.00000 F187.50000\n"
+            "G1 X1.18110 C0.00000 F187.50000\nG94\nG1 X1.25984 F3.93701\n");
+  EXPECT_EQ(body_of(blocks, options_for(Dialect::sinumerik)),
+            "G1 X32.000 F100.000\nG93\nG1 X31.600 C10.000 F187.500\n"
+            "G1 X30.000 C0.000 F187.500\nG94\nG1 X32.000 F100.000\n");
+}
+
+TEST(LatheProgramRotary, AnInverseTimeFeedThatPrintsAsZeroIsRefused) {
+  LatheProgram program;
+  program.modal = kModal;
+  program.blocks = {FeedModeChange{FeedMode::inverse_time},
+                    InverseTimeFeed{{30.0, std::nullopt, 1.0}, 0.00004}};
+  const auto refused = write_lathe_program(program, options_for(Dialect::linuxcnc));
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().code, ErrorCode::word_prints_as_zero);
+  program.blocks = {FeedModeChange{FeedMode::inverse_time},
+                    InverseTimeFeed{{30.0, std::nullopt, 1.0}, 0.00005}};  // F0.0001
+  EXPECT_TRUE(write_lathe_program(program, options_for(Dialect::linuxcnc)).ok());
+}
+
 TEST(FanucSpindleWords, SpeedsRoundHalfUpAndTheLimitFloors) {
   FanucSpindleWords words = fanuc_spindle_words(ConstantSpindleSpeed{500.5});
   EXPECT_EQ(words.s, 501.0);
