@@ -110,7 +110,8 @@ function flatResults(body) {
       { 'data-role': 'corners' },
       t('result.sharp_corners'),
       ': ',
-      value(body, '/sharp_corners', '', undefined, describeCorners),
+      // Words, not a data-result: the shown results are numbers and codes.
+      h('strong', { 'data-value': String(body.sharp_corners) }, describeCorners(body.sharp_corners)),
     ),
     h('h3', {}, t('result.flat_steps_and_flatness')),
     valueList(body, [
