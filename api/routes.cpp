@@ -63,7 +63,8 @@ std::span<const CalculationRoute> calculation_routes() {
       CalculationRoute{.path = "/v1/lathe-flat",
                        .handler = &lathe_flat::handle_lathe_flat,
                        .forms = json_and_plain_text_program,
-                       .reference_files = {"next/lathe-flat.json"}},
+                       .reference_files = {"next/lathe-flat.json"},
+                       .page_section = "flat"},
   };
   return routes;
 }

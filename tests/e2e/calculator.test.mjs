@@ -13,10 +13,12 @@
 //   - the displayed text is that value rounded (to the decimals shown) with its unit next to it;
 //   - the diagrams have their parts (data-role) with non-empty geometry, the dimension texts of the
 //     entry scheme match L_vr and X_n, the polygon has N vertices;
-//   - polygon and grooving: the program <pre> is the API's program, the Download program button
+//   - polygon, grooving and flat: the program <pre> is the API's program, the Download program button
 //     downloads a file (*.ngc, *.nc, *.MPF) whose content equals the API's text/plain answer to the
 //     same request; grooving: the groove's dimension texts match W, h, B and X2, the pattern strip
-//     draws the first revolutions.
+//     draws the first revolutions; flat: the cross-section's dimension texts match d, w and D, the
+//     tool at five steps, the step table has 2N + 1 rows, the magnified segment labels the flatness
+//     error in µm.
 // One invalid input (cutter diameter -5) must show the API's own message for that pointer next to
 // the input, with aria-invalid and aria-describedby; a resubmit clears it. At 375 px and 1280 px,
 // on the page's default values, every form is reached and submitted with the keyboard alone (Tab,
@@ -159,6 +161,21 @@ const SECTIONS = [
       'grooving-section': ['workpiece', 'groove', 'tool-start', 'tool-end', 'reference-point',
         'dimension-width', 'dimension-tool', 'dimension-shift', 'dimension-depth'],
       'grooving-pattern': ['pattern-walls', 'revolution', 'final-shift'],
+    },
+    program: { arcs: false },
+  },
+  {
+    id: 'flat',
+    file: 'next/lathe-flat.json',
+    tolerance: c => absPlusRel(c.tolerance),
+    // A case with program options, so that the form's program fields are used too.
+    prefer: c => (c.request.program !== undefined ? 0 : 1),
+    endpoints: { main: '/v1/lathe-flat' },
+    shown: { main: ['/flatness_error_mm', '/machining_time_min', '/steps_table/0/c_deg'] },
+    diagrams: {
+      'flat-section': ['part', 'flats', 'flat-1', 'axis', 'tool-path', 'tool', 'dimension-axis-distance',
+        'dimension-width', 'part-diameter'],
+      'flat-spiral': ['flat-line', 'hump', 'step-start', 'step-end', 'dimension-flatness', 'exaggeration'],
     },
     program: { arcs: false },
   },
@@ -970,6 +987,22 @@ describe('calculator page at 1280 px', () => {
         assert.equal(rows, Math.min(N, 8) + (N > 8 ? 1 : 0), `grooving-pattern: ${rows} revolutions drawn for N = ${N}`);
         const dwell = await page.locator('#grooving-result [data-role="dwell-seconds"]').textContent();
         assert.ok(dwell.includes((answer.dwell_time_min * 60).toFixed(3)), `grooving: the dwell in seconds is shown: ${dwell}`);
+      }
+      if (section.id === 'flat') {
+        // The flat's dimensions are the answer's d and face width, the part's is the request's D;
+        // the tool at five step points (fewer when 2N + 1 < 5); the step table has every row
+        // i = 0..2N; the flatness error is labelled in µm on the magnified segment.
+        const answer = bySource.main.json;
+        const parts = drawn['flat-section'].parts;
+        assertDimension('flat-section', 'dimension-axis-distance', parts, answer.axis_distance_mm, 'd');
+        assertDimension('flat-section', 'dimension-width', parts, answer.face_width_mm, 'w');
+        assertDimension('flat-section', 'part-diameter', parts, kase.request.part_diameter_mm, 'D');
+        const rows = answer.steps_table.length;
+        assert.equal(rows, 2 * answer.steps + 1, 'flat: the answer has 2N + 1 steps');
+        assert.equal(parts.tool.length, Math.min(5, rows), `flat-section: ${parts.tool.length} tools drawn`);
+        assertDimension('flat-spiral', 'dimension-flatness', drawn['flat-spiral'].parts, answer.flatness_error_mm * 1000, 'flatness error (µm)');
+        const tableRows = await page.locator('#flat-result table[data-role="steps-table"] tbody tr').count();
+        assert.equal(tableRows, rows, `flat: the step table shows ${tableRows} rows for ${rows} steps`);
       }
       if (section.program) {
         await checkProgramAndDownload(page, bySource.main, section.id, section.program);

@@ -257,14 +257,14 @@ describe('inches', () => {
     const { context, page, log } = await openPage(`${PAGE_URL}?units=inch`);
     try {
       await settle(log);
-      const PROGRAM_PATHS = ['/v1/main-time/program', '/v1/polygon-hole/gcode', '/v1/grooving/cycle'];
+      const PROGRAM_PATHS = ['/v1/main-time/program', '/v1/polygon-hole/gcode', '/v1/grooving/cycle', '/v1/lathe-flat'];
       const programs = log.exchanges.filter(e => PROGRAM_PATHS.includes(e.path));
       assert.equal(programs.length, PROGRAM_PATHS.length, 'one program request per program section');
       for (const e of programs) {
         assert.equal(JSON.parse(e.body).program?.units, 'inch', `${e.path}: program.units`);
         assert.equal(e.json?.units ?? 'inch', 'inch', `${e.path}: the answer's units`);
       }
-      for (const id of ['entry', 'polygon', 'grooving']) {
+      for (const id of ['entry', 'polygon', 'grooving', 'flat']) {
         const [download] = await Promise.all([page.waitForEvent('download'), page.locator(`#${id}-download`).click()]);
         const program = readFileSync(await download.path(), 'utf8');
         assert.match(program, /\bG20\b/, `the ${id} program downloads in inches (G20)`);

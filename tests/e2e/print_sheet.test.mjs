@@ -10,7 +10,7 @@
 //   - "Print sheet" marks its section and calls window.print() (stubbed: the test prints with
 //     page.pdf()); the PDF holds the section's inputs (label, value, unit), its shown results and
 //     its diagram's labels, on one page, and nothing of the other sections, no navigation, no
-//     buttons; for a program (entry, polygon, grooving) the program's file name and header, not its body;
+//     buttons; for a program (entry, polygon, grooving, flat) the program's file name and header, not its body;
 //     'afterprint' clears the mark;
 //   - printing without "Print sheet" (Ctrl+P) gives every section, each on its own page(s);
 //   - in Russian and in inches (lang=ru&units=inch) the bore and entry sheets say every word from
@@ -44,6 +44,7 @@ const SECTIONS = [
   { id: 'bore', title: 'Bore milling roughness', own: ['Cusp between adjacent tooth paths', 'Bore radius R'] },
   { id: 'polygon', title: 'Polygon-hole G-code', own: ['Inscribed diameter d', 'Arc-fit tolerance', 'Rotor tool: grinding and checking dimensions', 'Plunge to Z0'] },
   { id: 'grooving', title: 'Grooving cycle', own: ['Cycle: revolutions and shifts', 'Chip and wall roughness'] },
+  { id: 'flat', title: 'Flat on a lathe', own: ['Steps and flatness', 'Step table'] },
 ];
 // Sections here are optional, but each is a page section of the route table (cutcalc --routes).
 test('every section here is a page section of the route table, in its order', () => {
@@ -290,6 +291,7 @@ describe('setup sheets (print)', () => {
     { id: 'entry', endpoint: '/v1/main-time/program' },
     { id: 'polygon', endpoint: '/v1/polygon-hole/gcode' },
     { id: 'grooving', endpoint: '/v1/grooving/cycle' },
+    { id: 'flat', endpoint: '/v1/lathe-flat' },
   ]) {
     test(`Print sheet of ${id}: inputs, results, the program's file name and header, not its body`, { timeout: TEST_MS }, async () => {
       const { context, page, log } = await openPage(PAGE_URL);

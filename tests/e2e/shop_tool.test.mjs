@@ -54,6 +54,12 @@ const SECTIONS = [
   { id: 'bore', requests: { '/v1/roughness/bore-milling': 1 }, edit: ['/teeth', '6'] },
   { id: 'polygon', requests: { '/v1/polygon-hole/gcode': 1 }, edit: ['/faces', '5'] },
   { id: 'grooving', requests: { '/v1/grooving/cycle': 1 }, edit: ['/feed_per_rev_mm', '0.1'] },
+  {
+    id: 'flat',
+    requests: { '/v1/lathe-flat': 1 },
+    edit: ['/steps', '6'],
+    csv: { button: 'flat-steps-csv', table: true },
+  },
 ];
 const byId = id => SECTIONS.find(s => s.id === id);
 // Sections here are optional, but each is a page section of the route table (cutcalc --routes).
@@ -430,7 +436,7 @@ for (const width of [375, 1280]) {
         }
         await page.evaluate(() => window.scrollTo(0, 0));
         await page.screenshot({ path: path.join(ARTIFACT_DIR, `shop-tool-${width}.png`), fullPage: true });
-        console.log(`# ${width} px: 5 links, 5 curl commands and ${files} CSV files from the keyboard`);
+        console.log(`# ${width} px: ${SECTIONS.length} links, ${SECTIONS.length} curl commands and ${files} CSV files from the keyboard`);
         await assertClean(page, log, `${width} px keyboard`);
       } finally {
         await context.close();

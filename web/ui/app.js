@@ -4,6 +4,7 @@
 
 import * as bore from './bore.js';
 import * as entry from './entry.js';
+import * as flat from './flat.js';
 import * as groove from './groove.js';
 import * as grooving from './grooving.js';
 import { translatePage } from './i18n.js';
@@ -17,7 +18,7 @@ import { applyUnitsToPage } from './units.js';
 
 translatePage();
 applyUnitsToPage();
-const calculators = [entry, speeds, groove, bore, polygon, grooving].map((section) => section.init());
+const calculators = [entry, speeds, groove, bore, polygon, grooving, flat].map((section) => section.init());
 wireSectionTools(calculators);
 wirePageHistory(calculators);
 wirePrintSheets(calculators);

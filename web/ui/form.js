@@ -234,7 +234,7 @@ export function value(
   const num = h(
     'span',
     {
-      class: 'num',
+      class: typeof v === 'number' ? 'num' : 'num words',
       'data-result': pointer,
       'data-value': String(v),
       'data-unit': unit ? shownUnit(unit) : undefined,
