@@ -10,7 +10,7 @@ import {
   h,
   noDiagram,
   readBody,
-  downloadProgram,
+  wireProgramDownload,
   showFailure,
   iso,
   sym,
@@ -79,15 +79,7 @@ export function init() {
     }
   });
 
-  download.addEventListener('click', async () => {
-    if (!programRequest) return;
-    download.disabled = true;
-    try {
-      await downloadProgram(form, PROGRAM_PATH, programRequest, 'CUTCALC.ngc');
-    } finally {
-      download.disabled = programRequest === null;
-    }
-  });
+  wireProgramDownload(download, form, PROGRAM_PATH, () => programRequest, 'CUTCALC.ngc');
   return calculator;
 }
 

@@ -6,7 +6,7 @@ import { onCalculate } from './calculation.js';
 import { csvButton } from './export.js';
 import {
   at,
-  downloadProgram,
+  wireProgramDownload,
   fmt,
   h,
   readBody,
@@ -76,15 +76,7 @@ export function init() {
     );
   });
 
-  download.addEventListener('click', async () => {
-    if (!calculated) return;
-    download.disabled = true;
-    try {
-      await downloadProgram(form, PATH, calculated, 'CUTCALC.ngc');
-    } finally {
-      download.disabled = calculated === null;
-    }
-  });
+  wireProgramDownload(download, form, PATH, () => calculated, 'CUTCALC.ngc');
   return calculator;
 }
 

@@ -305,3 +305,18 @@ export async function downloadProgram(form, path, body, fallback) {
     showMessage(form, t('error.download_failed', { reason: error?.message ?? error }));
   }
 }
+
+// A "Download program" button: a click downloads the program of the request `currentBody()`
+// returns (nothing while there is none), the button disabled while it is fetched.
+export function wireProgramDownload(button, form, path, currentBody, fallback) {
+  button.addEventListener('click', async () => {
+    const body = currentBody();
+    if (!body) return;
+    button.disabled = true;
+    try {
+      await downloadProgram(form, path, body, fallback);
+    } finally {
+      button.disabled = currentBody() === null;
+    }
+  });
+}

@@ -4,7 +4,7 @@
 
 import { onCalculate } from './calculation.js';
 import {
-  downloadProgram,
+  wireProgramDownload,
   h,
   iso,
   readBody,
@@ -68,15 +68,7 @@ export function init() {
     );
   });
 
-  download.addEventListener('click', async () => {
-    if (!calculated) return;
-    download.disabled = true;
-    try {
-      await downloadProgram(form, PATH, calculated, 'CUTCALC.ngc');
-    } finally {
-      download.disabled = calculated === null;
-    }
-  });
+  wireProgramDownload(download, form, PATH, () => calculated, 'CUTCALC.ngc');
   return calculator;
 }
 

@@ -8,7 +8,7 @@ import {
   h,
   noDiagram,
   readBody,
-  downloadProgram,
+  wireProgramDownload,
   showFailure,
   sym,
   value,
@@ -63,15 +63,7 @@ export function init() {
     result.append(...programResults(answer, result), h('h3', {}, t('result.g_code')), program);
   });
 
-  download.addEventListener('click', async () => {
-    if (!calculated) return;
-    download.disabled = true;
-    try {
-      await downloadProgram(form, PATH, calculated, 'polygon-hole.ngc');
-    } finally {
-      download.disabled = calculated === null;
-    }
-  });
+  wireProgramDownload(download, form, PATH, () => calculated, 'polygon-hole.ngc');
   return calculator;
 }
 
