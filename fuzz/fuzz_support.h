@@ -57,8 +57,9 @@ std::optional<std::string> negative_length(const nlohmann::json& body);
 std::optional<std::string> bad_program_text(std::string_view program);
 
 // What is wrong with a pass program (POST /v1/main-time/program) or a lathe program (POST
-// /v1/grooving/cycle) in any dialect, against the text rules of spec programs.md section 3 and
-// grooving-cycle.md section 5.2; nullopt when nothing is.
+// /v1/grooving/cycle, POST /v1/lathe-flat) in any dialect, against the text rules of spec
+// programs.md section 3, grooving-cycle.md section 5.2 and lathe-flat.md section 6.2; nullopt
+// when nothing is.
 std::optional<std::string> bad_dialect_program_text(std::string_view program);
 
 }  // namespace cutcalc::fuzz
