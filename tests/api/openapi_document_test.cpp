@@ -364,9 +364,9 @@ TEST(OpenApiDocument, EveryOperationHasAUniqueOperationIdSummaryDescriptionAndTa
     ASSERT_TRUE(o.op->contains("tags")) << id;
     EXPECT_FALSE((*o.op)["tags"].empty()) << id;
   }
-  // 15 paths (8 calculations, 5 operations, the web page and its assets), each with OPTIONS; the
+  // 16 paths (9 calculations, 5 operations, the web page and its assets), each with OPTIONS; the
   // 7 GET paths with HEAD.
-  EXPECT_EQ(ids.size(), 15U + 15U + 7U);
+  EXPECT_EQ(ids.size(), 16U + 16U + 7U);
 }
 
 TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {
@@ -389,7 +389,7 @@ TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {
           << o.path << " " << status;
     }
   }
-  EXPECT_EQ(json_body_operations, 8);
+  EXPECT_EQ(json_body_operations, 9);
 }
 
 TEST(OpenApiDocument, EveryResponseCarriesXRequestIdAndEveryOperationAcceptsIt) {
