@@ -46,7 +46,8 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
 
 // A key whose number (or list of numbers) must never be negative: a length, size or time. Keys
 // ending in _mm, _mm2, _um or _min (minutes, not rates such as _m_per_min, which are signed
-// speeds), except the signed coordinates and offsets x_mm, y_mm, offset_mm and axis_y_mm.
+// speeds), except the signed coordinates and offsets x_mm, y_mm, offset_mm and axis_y_mm (and the
+// others of support/quantity_keys.h).
 bool is_non_negative_key(std::string_view key);
 
 // The first negative number under a non-negative key, as "pointer = value", or nullopt.

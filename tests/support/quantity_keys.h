@@ -7,11 +7,12 @@
 
 namespace cutcalc::test_support {
 
-// Lengths (_mm, _mm2, _um) and times (_min, not rates _per_min) are >= 0; coordinates, offsets and
-// the lateral limits of an entry-length scheme (frame Y, negative for arcs) are signed.
+// Lengths (_mm, _mm2, _um) and times (_min, not rates _per_min) are >= 0; coordinates, offsets,
+// the lateral limits of an entry-length scheme (frame Y, negative for arcs) and the X change of a
+// lathe flat's step (dx_mm: negative past the flat's middle, lathe-flat.md section 8) are signed.
 inline bool is_non_negative_quantity(std::string_view key) {
   if (key == "x_mm" || key == "y_mm" || key == "offset_mm" || key == "axis_y_mm" ||
-      key == "y_min_mm" || key == "y_max_mm") {
+      key == "y_min_mm" || key == "y_max_mm" || key == "dx_mm") {
     return false;
   }
   if (key.ends_with("_mm") || key.ends_with("_mm2") || key.ends_with("_um")) {
