@@ -17,19 +17,25 @@ using program::WarningCode;
 
 double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
 
-// F1: d from whichever of t, b, d, s was given; error when it is not inside the part.
+// F1: d from whichever of t, b, d, s was given; error when it is not inside the part. A t or b
+// so small beside D that d rounds to R2 leaves no flat in doubles (alpha_e = 0, zero chords, an
+// infinite G93 F): refused like a flat outside the part, at the same field.
 Result<double> axis_distance(const LatheFlatParams& p) {
   const double r2 = p.part_diameter_mm / 2.0;
   if (p.flat_depth_mm) {
     if (*p.flat_depth_mm >= r2) return make_error(ErrorCode::flat_outside_part, "t >= R2");
-    return r2 - *p.flat_depth_mm;
+    const double d = r2 - *p.flat_depth_mm;
+    if (!(d < r2)) return make_error(ErrorCode::flat_outside_part, "t below R2's resolution");
+    return d;
   }
   if (p.flat_width_mm) {
     if (*p.flat_width_mm >= p.part_diameter_mm) {
       return make_error(ErrorCode::flat_outside_part, "b >= D");
     }
     const double half = *p.flat_width_mm / 2.0;
-    return std::sqrt((r2 - half) * (r2 + half));
+    const double d = std::sqrt((r2 - half) * (r2 + half));
+    if (!(d < r2)) return make_error(ErrorCode::flat_outside_part, "b below D's resolution");
+    return d;
   }
   if (p.across_flats_mm) {
     if (*p.across_flats_mm >= p.part_diameter_mm) {
