@@ -150,6 +150,11 @@ constexpr std::array kCatalogue{
           "rounds to the part's surface",
           "лыска (или её слой) слишком мелкая для этой детали: её плоскость при вычислении "
           "совпадает с поверхностью детали"},
+    Entry{ErrorCode::steps_below_resolution,
+          "a step of the flat moves less than the program prints (its X and C words repeat): use "
+          "fewer steps or more decimals",
+          "шаг лыски меньше, чем выводит программа (её слова X и C повторяются): уменьшите число "
+          "шагов или увеличьте число знаков"},
     Entry{ErrorCode::required, "is required", "обязательное поле"},
     Entry{ErrorCode::required_choice, "is required (one of: {allowed})",
           "обязательное поле (одно из: {allowed})"},

@@ -576,9 +576,9 @@ bool is_positive_value(std::string_view text, bool whole) {
 
 // A lathe block (grooving-cycle.md section 5.2, the writer of domain/program/lathe_program.h)
 // that is not one of the dialect's literal forms; nullopt when it is. The tool call, spindle
-// and dwell blocks are checked whole; every other block has the words G X Z F S M in that order
-// (G and M whole numbers, X Z F real, no Y I J C H T D P), sinumerik's modal DIAMON among the
-// G words, one M word.
+// and dwell blocks are checked whole; every other block has the words G X Z C F S M in that order
+// (G and M whole numbers, X Z C F real, no Y I J H T D P), sinumerik's modal DIAMON among the
+// G words, one M word. Where a C word may stand is bad_flat_block's (lathe-flat.md 6.2).
 std::optional<std::string> bad_lathe_block(std::string_view line, bool fanuc, bool sinumerik) {
   const std::vector<std::string_view> w = block_words(line);
   const auto value = [](std::string_view word) { return word.substr(1); };
@@ -631,14 +631,14 @@ std::optional<std::string> bad_lathe_block(std::string_view line, bool fanuc, bo
     return ok ? std::nullopt
               : std::optional<std::string>("not the dialect's dwell block, or a zero dwell");
   }
-  constexpr std::string_view kOrder = "GXZFSM";
+  constexpr std::string_view kOrder = "GXZCFSM";
   std::size_t previous_rank = 0;
   std::size_t m_words = 0;
   for (const std::string_view word : w) {
     if (sinumerik && word == "DIAMON" && previous_rank == 0) continue;
     const std::size_t rank = word.empty() ? std::string_view::npos : kOrder.find(word.front());
     if (rank == std::string_view::npos || rank < previous_rank) {
-      return "a word out of G X Z F S M or of that order: \"" + std::string(word) + "\"";
+      return "a word out of G X Z C F S M or of that order: \"" + std::string(word) + "\"";
     }
     previous_rank = rank;
     m_words += word.front() == 'M' ? 1 : 0;
@@ -655,6 +655,53 @@ std::optional<std::string> bad_lathe_block(std::string_view line, bool fanuc, bo
     }
   }
   if (m_words > 1) return std::string("more than one M word in a block");
+  return std::nullopt;
+}
+
+// The feed mode and C axis of a lathe program as its blocks go by (lathe-flat.md 6.1-6.2).
+struct LatheFlatState {
+  bool inverse_time = false;  // after a G93 block, until a G94 block
+  bool g93_seen = false;      // a flat program: G93 is written by nothing else
+  bool c_words = false;
+  bool spindle_words = false;  // an S word or M3/M4 (none in a flat program)
+};
+
+// A lathe block against the flat's feed-mode rules: G93 and G94 stand alone (except G94 in the
+// modal line); a C word only in a rapid (G0 C, the index with the tool clear) or in a G1 under
+// G93; every G1 under G93 has its own F (its 1/T); no rapid under G93. Updates `state`.
+std::optional<std::string> bad_flat_block(std::string_view line, bool fanuc,
+                                          LatheFlatState& state) {
+  const std::vector<std::string_view> w = block_words(line);
+  const auto has = [&](std::string_view word) {
+    return std::find(w.begin(), w.end(), word) != w.end();
+  };
+  const auto has_letter = [&](char letter) {
+    return std::any_of(w.begin(), w.end(),
+                       [&](std::string_view word) { return !word.empty() && word[0] == letter; });
+  };
+  if (has_letter('S') || has(fanuc ? "M03" : "M3") || has(fanuc ? "M04" : "M4")) {
+    state.spindle_words = true;
+  }
+  if (has("G93")) {
+    if (w.size() != 1) return std::string("G93 not alone in its block");
+    state.inverse_time = state.g93_seen = true;
+    return std::nullopt;
+  }
+  if (has("G94")) {
+    if (state.inverse_time && w.size() != 1) return std::string("G94 after G93 not alone");
+    state.inverse_time = false;
+  }
+  const bool rapid = has(fanuc ? "G00" : "G0");
+  const bool feed = has(fanuc ? "G01" : "G1");
+  const bool c_word = has_letter('C');
+  state.c_words = state.c_words || c_word;
+  if (state.inverse_time && rapid) return std::string("a rapid under G93");
+  if (c_word && !rapid && !(feed && state.inverse_time)) {
+    return std::string("a C word outside a rapid or a G93 G1 block");
+  }
+  if (feed && state.inverse_time && !has_letter('F')) {
+    return std::string("a G93 block without its own F");
+  }
   return std::nullopt;
 }
 
@@ -686,6 +733,7 @@ std::optional<std::string> bad_dialect_program_text(std::string_view program) {
       return std::isdigit(static_cast<unsigned char>(c)) != 0;
     });
   };
+  LatheFlatState flat;
   std::size_t line_number = 0;
   std::size_t begin = 0;
   while (begin < program.size()) {
@@ -712,6 +760,7 @@ std::optional<std::string> bad_dialect_program_text(std::string_view program) {
     }
     if (lathe) {
       if (auto why = bad_lathe_block(line, fanuc, sinumerik)) return where + *why;
+      if (auto why = bad_flat_block(line, fanuc, flat)) return where + *why;
       continue;
     }
     constexpr std::string_view kOrder = "GXYZIJCHFSTDM";
@@ -749,6 +798,11 @@ std::optional<std::string> bad_dialect_program_text(std::string_view program) {
     }
     if (m_words > 1) return where + "more than one M word in a block";
   }
+  if (flat.c_words && !flat.g93_seen) return std::string("C words in a program without G93");
+  if (flat.g93_seen && flat.spindle_words) {
+    return std::string("a spindle word in a flat program (the C axis is not a spindle there)");
+  }
+  if (flat.inverse_time) return std::string("the program ends under G93");
   return std::nullopt;
 }
 
@@ -807,7 +861,8 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
     if (auto why = problem_shape(body, status)) {
       return why;
     }
-  } else if ((path == "/v1/main-time/program" || path == "/v1/grooving/cycle") &&
+  } else if ((path == "/v1/main-time/program" || path == "/v1/grooving/cycle" ||
+              path == "/v1/lathe-flat") &&
              body.contains("program") && body["program"].is_string()) {
     if (auto why = bad_dialect_program_text(body["program"].get<std::string>())) {
       return "the JSON answer's program: " + *why;

@@ -46,7 +46,8 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
 
 // A key whose number (or list of numbers) must never be negative: a length, size or time. Keys
 // ending in _mm, _mm2, _um or _min (minutes, not rates such as _m_per_min, which are signed
-// speeds), except the signed coordinates and offsets x_mm, y_mm, offset_mm and axis_y_mm.
+// speeds), except the signed coordinates and offsets x_mm, y_mm, offset_mm and axis_y_mm (and the
+// others of support/quantity_keys.h).
 bool is_non_negative_key(std::string_view key);
 
 // The first negative number under a non-negative key, as "pointer = value", or nullopt.
@@ -57,8 +58,9 @@ std::optional<std::string> negative_length(const nlohmann::json& body);
 std::optional<std::string> bad_program_text(std::string_view program);
 
 // What is wrong with a pass program (POST /v1/main-time/program) or a lathe program (POST
-// /v1/grooving/cycle) in any dialect, against the text rules of spec programs.md section 3 and
-// grooving-cycle.md section 5.2; nullopt when nothing is.
+// /v1/grooving/cycle, POST /v1/lathe-flat) in any dialect, against the text rules of spec
+// programs.md section 3, grooving-cycle.md section 5.2 and lathe-flat.md section 6.2; nullopt
+// when nothing is.
 std::optional<std::string> bad_dialect_program_text(std::string_view program);
 
 }  // namespace cutcalc::fuzz

@@ -15,8 +15,8 @@
 # answers are well-framed HTTP/1.1, never more than the requests, problem+json for errors, and
 # that a fresh connection is still served). Its dictionary is fuzz/http.dict.
 #
-# Time: one request harness per route and answer form (11 today) x CUTCALC_FUZZ_SECONDS (default 30)
-# + the engine harness for CUTCALC_FUZZ_ENGINE_SECONDS (default 90) = 7 minutes of fuzzing, plus the build (about 3 minutes
+# Time: one request harness per route and answer form (13 today) x CUTCALC_FUZZ_SECONDS (default 30)
+# + the engine harness for CUTCALC_FUZZ_ENGINE_SECONDS (default 90) = 8 minutes of fuzzing, plus the build (about 3 minutes
 # from scratch on two idle cores; incremental afterwards).
 #
 # Environment:

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <numbers>
 
+#include "domain/program/dialect_writer.h"
 #include "domain/program/lathe_program.h"
 
 namespace cutcalc::domain::lathe_flat {
@@ -55,10 +56,36 @@ std::vector<LatheBlock> blocks(const LatheFlatParams& params, const LatheFlatRes
   return out;
 }
 
+// Every cutting block must move in its printed words: one whose X and C print as the previous
+// block's would stand still for its 1/F under G93 (a flat too small for the program's decimals).
+bool every_step_prints_a_move(const LatheFlatParams& params, const LatheFlatResult& flat,
+                              const ProgramOptions& options) {
+  const int decimals = decimals_of(options);
+  const int n = flat.steps;
+  for (const FlatSection& layer : flat.layer_sections) {
+    const double alpha_e = engagement_half_angle_rad(layer);
+    std::string previous_x;
+    std::string previous_c;
+    for (int i = 0; i <= 2 * n; ++i) {
+      const double alpha = step_angle_rad(alpha_e, n, i);
+      const std::string x = format_fixed(
+          to_program_units(2.0 * tool_radius_position_mm(layer, alpha), options.units), decimals);
+      const std::string c = format_fixed(degrees(alpha), decimals);
+      if (i > 0 && x == previous_x && c == previous_c) return false;
+      previous_x = x;
+      previous_c = c;
+    }
+  }
+  return params.flats >= 1;
+}
+
 }  // namespace
 
 Result<FlatProgram> write_flat_program(const LatheFlatParams& params, const LatheFlatResult& flat,
                                        const ProgramOptions& options) {
+  if (!every_step_prints_a_move(params, flat, options)) {
+    return make_error(ErrorCode::steps_below_resolution);
+  }
   LatheProgram program;
   program.modal = kModalLines;
   program.comments = {"CUTCALC LATHE FLAT",

@@ -18,7 +18,8 @@ struct FlatProgram {
   std::string file_name;
 };
 
-// Section 6.2. Errors: word_prints_as_zero (an F that would print as zero).
+// Section 6.2. Errors: word_prints_as_zero (an F that would print as zero), steps_below_resolution
+// (a cutting block whose X and C print as the previous block's: it would stand still for its 1/F).
 Result<FlatProgram> write_flat_program(const LatheFlatParams& params, const LatheFlatResult& flat,
                                        const program::ProgramOptions& options);
 

@@ -6,7 +6,8 @@
 // errors[] naming expect.pointer, as application/problem+json; the program facts of
 // expect.program: loops, layers, z_min, g95_flat_F, g94_F, last_C; the lathe facts first_lines,
 // last_lines, spindle_line, feed_moves, z_feed_moves, dwell_blocks, min_x, x_feed_travel,
-// z_feed_travel) and every answer, success or
+// z_feed_travel; the lathe flat facts dialect, feed_mode, c_steps, x_word_min/max, c_word_min/max,
+// first_line, last_line) and every answer, success or
 // problem, against openapi.yaml (contract.mjs: Ajv, JSON Schema 2020-12; status, media type,
 // headers, body). A case listed in tests/reference-corrections.json (a request that contradicts the spec
 // it cites) is replayed with its corrected request, said in the output. rs274 acceptance of the programs (expect.program.rs274) is tests/gcode's.
@@ -276,15 +277,63 @@ function checkLatheProgram(checks, body, out) {
   }
 }
 
+// Facts of a lathe flat program (lathe-flat.md, the file's `compare`): the G1 blocks with a C word,
+// whether each is under G93 (the modal feed mode of the blocks before it, or its own word) with
+// its own F word, and the smallest and largest of their printed X and C words, kept as text.
+function flatProgramFacts(program) {
+  const facts = { cSteps: 0, cStepsNotG93: 0, cStepsWithoutF: 0, x: [], c: [] };
+  let inverseTime = false;
+  for (const line of program.split('\n')) {
+    const block = line.replace(/\([^)]*\)/g, '').replace(/;.*$/, '').trim();
+    if (block === '' || block === '%') continue;
+    const words = block.split(/\s+/);
+    if (words.includes('G93')) inverseTime = true;
+    if (words.includes('G94') || words.includes('G95')) inverseTime = false;
+    if (!(words.includes('G1') || words.includes('G01')) || word(block, 'C') === '') continue;
+    facts.cSteps++;
+    if (!inverseTime) facts.cStepsNotG93++;
+    if (word(block, 'F') === '') facts.cStepsWithoutF++;
+    for (const letter of ['X', 'C']) {
+      if (word(block, letter) !== '') facts[letter.toLowerCase()].push(word(block, letter));
+    }
+  }
+  const extreme = (texts, pick) => (texts.length === 0 ? '' : texts.reduce((a, b) => (pick(Number(b), Number(a)) ? b : a)));
+  for (const letter of ['x', 'c']) {
+    facts[`${letter}Min`] = extreme(facts[letter], (b, a) => b < a);
+    facts[`${letter}Max`] = extreme(facts[letter], (b, a) => b > a);
+  }
+  return facts;
+}
+
+function checkFlatProgram(checks, body, out) {
+  const facts = flatProgramFacts(body.program);
+  const lines = body.program.split('\n');
+  if (lines.at(-1) === '') lines.pop();
+  if ('dialect' in checks && body.dialect !== checks.dialect) out.push(`program: dialect ${body.dialect}, want ${checks.dialect}`);
+  if ('feed_mode' in checks) {
+    if (checks.feed_mode !== 'G93') out.push(`program: feed_mode ${checks.feed_mode} is not a mode this replayer knows`);
+    else if (facts.cStepsNotG93 > 0 || facts.cStepsWithoutF > 0) {
+      out.push(`program: of ${facts.cSteps} G1 blocks with C, ${facts.cStepsNotG93} not under G93 and ${facts.cStepsWithoutF} without their own F`);
+    }
+  }
+  if ('c_steps' in checks && facts.cSteps !== checks.c_steps) out.push(`program: c_steps ${facts.cSteps}, want ${checks.c_steps}`);
+  for (const [key, got] of [['x_word_min', facts.xMin], ['x_word_max', facts.xMax], ['c_word_min', facts.cMin], ['c_word_max', facts.cMax]]) {
+    if (key in checks && got !== checks[key]) out.push(`program: ${key} ${JSON.stringify(got)}, want ${JSON.stringify(checks[key])}`);
+  }
+  if ('first_line' in checks && lines[0] !== checks.first_line) out.push(`program: first line ${JSON.stringify(lines[0])}, want ${JSON.stringify(checks.first_line)}`);
+  if ('last_line' in checks && lines.at(-1) !== checks.last_line) out.push(`program: last line ${JSON.stringify(lines.at(-1))}, want ${JSON.stringify(checks.last_line)}`);
+}
+
 const kPolygonFacts = ['loops', 'layers', 'z_min', 'g95_flat_F', 'g94_F', 'last_C'];
 // rs274's acceptance is the gcode tests' to check (tests/gcode), with the program translated.
 const kCheckedByGcodeTests = ['rs274'];
 const kLatheFacts = ['first_lines', 'last_lines', 'spindle_line', 'feed_moves', 'z_feed_moves', 'dwell_blocks', 'min_x', 'x_feed_travel', 'z_feed_travel'];
+const kFlatFacts = ['dialect', 'feed_mode', 'c_steps', 'x_word_min', 'x_word_max', 'c_word_min', 'c_word_max', 'first_line', 'last_line'];
 
 function checkProgram(checks, body, request, out) {
   if (typeof body.program !== 'string') return out.push('/program: missing');
   // A fact this replayer does not know would pass unchecked: refuse it instead.
-  const unknown = Object.keys(checks).filter(k => ![...kPolygonFacts, ...kLatheFacts, ...kCheckedByGcodeTests].includes(k));
+  const unknown = Object.keys(checks).filter(k => ![...kPolygonFacts, ...kLatheFacts, ...kFlatFacts, ...kCheckedByGcodeTests].includes(k));
   if (unknown.length > 0) return out.push(`program: facts this replayer cannot check: ${unknown.join(', ')}`);
   const perLoop = body.blocks_per_loop;
   const facts = programFacts(body.program, Number.isInteger(perLoop) ? perLoop : 0);
@@ -304,6 +353,7 @@ function checkProgram(checks, body, request, out) {
   if ('g94_F' in checks && facts.g94F !== checks.g94_F) out.push(`program: G94 F ${facts.g94F}, want ${checks.g94_F}`);
   if ('last_C' in checks && facts.lastC !== checks.last_C) out.push(`program: last C ${facts.lastC}, want ${checks.last_C}`);
   checkLatheProgram(checks, body, out);
+  checkFlatProgram(checks, body, out);
   return out;
 }
 
