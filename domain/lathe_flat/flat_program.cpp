@@ -58,8 +58,7 @@ std::vector<LatheBlock> blocks(const LatheFlatParams& params, const LatheFlatRes
 
 // Every cutting block must move in its printed words: one whose X and C print as the previous
 // block's would stand still for its 1/F under G93 (a flat too small for the program's decimals).
-bool every_step_prints_a_move(const LatheFlatParams& params, const LatheFlatResult& flat,
-                              const ProgramOptions& options) {
+bool every_step_prints_a_move(const LatheFlatResult& flat, const ProgramOptions& options) {
   const int decimals = decimals_of(options);
   const int n = flat.steps;
   for (const FlatSection& layer : flat.layer_sections) {
@@ -76,14 +75,14 @@ bool every_step_prints_a_move(const LatheFlatParams& params, const LatheFlatResu
       previous_c = c;
     }
   }
-  return params.flats >= 1;
+  return true;
 }
 
 }  // namespace
 
 Result<FlatProgram> write_flat_program(const LatheFlatParams& params, const LatheFlatResult& flat,
                                        const ProgramOptions& options) {
-  if (!every_step_prints_a_move(params, flat, options)) {
+  if (!every_step_prints_a_move(flat, options)) {
     return make_error(ErrorCode::steps_below_resolution);
   }
   LatheProgram program;

@@ -109,14 +109,14 @@ TEST(FuzzRegression, PolygonWithAHundredThousandLayersIsRefusedBySizeCap) {
 // property step of scripts/ci-contract.sh (boundary case): a flat 1e-6 mm wide on a 1000 m part is
 // 2.5e-19 mm deep, below the resolution of R2 in doubles: d rounded to R2, alpha_e to 0, and the
 // answer was 200 with zero widths and the G93 blocks `F inf`. With t kept exact the flat is
-// computed, and its steps, far below the printed resolution, are refused; so is a depth below R2's
-// resolution.
+// computed, and its steps, far below the printed resolution, are refused; so are those of a 1 um
+// deep flat there.
 TEST(FuzzRegression, LatheFlatBelowTheResolutionOfThePartIsRefused) {
   expect_field_error(run("/v1/lathe-flat", R"({"part_diameter_mm": 1000000,
     "flat_width_mm": 0.000001, "flatness_tolerance_mm": 0.000001, "feed_mm_per_min": 170})"),
                      "");
   expect_field_error(run("/v1/lathe-flat", R"({"part_diameter_mm": 1000000,
-    "flat_depth_mm": 1e-12, "steps": 4, "feed_mm_per_min": 170})"),
+    "flat_depth_mm": 0.000001, "steps": 4, "feed_mm_per_min": 170})"),
                      "");
 }
 

@@ -82,11 +82,6 @@ TEST(LatheFlatBadInput, FlatsThroughTheAxisAndOnHugePartsAreAnsweredSanely) {
                                    {"program", {{"decimals", 6}}}},
                               json{{"part_diameter_mm", 1e6},
                                    {"flat_depth_mm", 1e-6},
-                                   {"steps", 1000},
-                                   {"feed_mm_per_min", 1e6},
-                                   {"program", {{"units", "inch"}}}},
-                              json{{"part_diameter_mm", 1e6},
-                                   {"flat_depth_mm", 1e-6},
                                    {"flats", 12},
                                    {"flatness_tolerance_mm", 1e-6},
                                    {"feed_mm_per_min", 1e6},
@@ -95,6 +90,16 @@ TEST(LatheFlatBadInput, FlatsThroughTheAxisAndOnHugePartsAreAnsweredSanely) {
               200)
         << request;
   }
+  // The same 1 um flat at 1000 steps in inches: its steps move less than the 5 printed decimals,
+  // so its blocks would stand still (steps_below_resolution).
+  const json too_fine{{"part_diameter_mm", 1e6},
+                      {"flat_depth_mm", 1e-6},
+                      {"steps", 1000},
+                      {"feed_mm_per_min", 1e6},
+                      {"program", {{"units", "inch"}}}};
+  EXPECT_EQ(expect_sane_answer("/v1/lathe-flat", &api::lathe_flat::handle_lathe_flat, too_fine),
+            422)
+      << too_fine;
 }
 
 }  // namespace
