@@ -32,6 +32,7 @@
 
 #include "api/grooving/grooving_cycle_endpoint.h"
 #include "domain/grooving/revolution_time.h"
+#include "gcode/lathe_program_runs.h"
 #include "gcode/program_text.h"
 #include "gcode/rs274_runner.h"
 #include "support/program_text_rules.h"
@@ -48,96 +49,6 @@ constexpr double kCanonStep = 1e-4;  // rs274 prints canonical arguments with 4 
 const std::vector<std::string> kDialects = {"linuxcnc", "fanuc", "sinumerik"};
 const std::vector<std::string> kUnits = {"mm", "inch"};
 
-std::vector<json> ok_cases() {
-  std::ifstream in(std::string(CUTCALC_REFERENCE_DIR) + "/next/grooving-cycle.json");
-  const json file = json::parse(in);
-  std::vector<json> cases;
-  for (const json& c : file.at("cases")) {
-    if (c.at("expect").at("status") == 200) cases.push_back(c);
-  }
-  return cases;
-}
-
-// The tool table rs274 needs for `T{t} M6` (tool_number 1..99).
-std::string tool_table() {
-  std::string table;
-  for (int t = 1; t <= 99; ++t) {
-    const std::string number = std::to_string(t);
-    table.append("T").append(number).append(" P").append(number).append(" ;\n");
-  }
-  return table;
-}
-
-struct Command {
-  std::string name;  // STRAIGHT_TRAVERSE, STRAIGHT_FEED, SET_FEED_RATE, SET_FEED_MODE, DWELL
-  std::vector<double> args;
-};
-
-std::vector<Command> canonical(const std::string& output) {
-  std::vector<Command> commands;
-  std::istringstream in(output);
-  std::string line;
-  while (std::getline(in, line)) {
-    for (const char* call : {" STRAIGHT_TRAVERSE(", " STRAIGHT_FEED(", " SET_FEED_RATE(",
-                             " SET_FEED_MODE(", " DWELL("}) {
-      const std::string_view text(call);
-      const auto at = line.find(text);
-      if (at == std::string::npos) continue;
-      Command command{std::string(text.substr(1, text.size() - 2)), {}};
-      std::istringstream args(line.substr(at + text.size()));
-      std::string value;
-      while (std::getline(args, value, ','))
-        command.args.push_back(std::strtod(value.c_str(), nullptr));
-      commands.push_back(command);
-    }
-  }
-  return commands;
-}
-
-// The request of `reference` with its program options set to `dialect` and `units` (members that
-// only another dialect takes are dropped) and, when given, `decimals`.
-json request_for(const json& reference, const std::string& dialect, const std::string& units,
-                 std::optional<int> decimals) {
-  json request = reference.at("request");
-  json program = request.value("program", json::object());
-  program["dialect"] = dialect;
-  program["units"] = units;
-  if (dialect != "fanuc") program.erase("program_number");
-  if (dialect == "sinumerik" && program.value("work_offset", "G54") > "G57") {
-    program["work_offset"] = "G54";
-  }
-  if (decimals) program["decimals"] = *decimals;
-  request["program"] = program;
-  return request;
-}
-
-struct Written {
-  json body;
-  std::string linuxcnc;  // translated
-  std::vector<Command> canon;
-  bool ok = false;
-};
-
-Written write_and_run(const json& request, const std::string& dialect) {
-  Written out;
-  const auto outcome = cutcalc::api::grooving::handle_grooving_cycle(request);
-  const auto* both = std::get_if<cutcalc::api::JsonWithText>(&outcome);
-  if (both == nullptr) {
-    ADD_FAILURE() << "no program for " << request.dump();
-    return out;
-  }
-  out.body = both->json;
-  EXPECT_EQ(both->json.at("program"), both->text);
-  cutcalc::testing::expect_text_rules(both->text, dialect);
-  out.linuxcnc = translate_to_linuxcnc(both->text, dialect);
-  const Rs274Run run = run_rs274_with_tools(out.linuxcnc, tool_table());
-  EXPECT_TRUE(run.started) << run.spawn_error;
-  EXPECT_EQ(run.exit_code, 0) << run.errors << "\n" << out.linuxcnc;
-  out.canon = canonical(run.output);
-  out.ok = run.started && run.exit_code == 0;
-  return out;
-}
-
 SpindleMode spindle_of(const json& request) {
   SpindleMode spindle;
   if (request.contains("spindle_speed_rpm"))
@@ -150,7 +61,7 @@ SpindleMode spindle_of(const json& request) {
 }
 
 // Section 5.3 on one program: the text facts, the canonical counts, the dwell and the feed time.
-void check_facts(const json& request, const Written& got) {
+void check_facts(const json& request, const LatheRun& got) {
   const json& body = got.body;
   const bool inch = body.at("units") == "inch";
   const double unit = inch ? kMmPerInch : 1.0;  // mm per program unit
@@ -221,7 +132,7 @@ void check_facts(const json& request, const Written& got) {
   const auto close_point = [&](double gx, double gz) {
     bound_min += std::fabs(gx) * e_x + std::fabs(gz) * e_z;
   };
-  for (const Command& c : got.canon) {
+  for (const CanonCall& c : got.canon) {
     if (c.name == "DWELL") {
       ++dwells;
       EXPECT_NEAR(c.args.at(0), dwell_s, 0.5e-3 + 1e-9);
@@ -267,15 +178,16 @@ void check_facts(const json& request, const Written& got) {
 }
 
 TEST(GroovingProgramAcceptance, EveryReferenceProgramInEveryDialectAndUnitIsAcceptedAndTimed) {
-  const auto cases = ok_cases();
+  const auto cases = ok_reference_cases("next/grooving-cycle.json");
   ASSERT_GE(cases.size(), 9U);
   int checked = 0;
   for (const json& reference : cases) {
     for (const std::string& units : kUnits) {
       for (const std::string& dialect : kDialects) {
         SCOPED_TRACE(reference.at("id").get<std::string>() + " " + dialect + " " + units);
-        const json request = request_for(reference, dialect, units, std::nullopt);
-        const Written got = write_and_run(request, dialect);
+        const json request = request_with_program(reference, dialect, units, std::nullopt);
+        const LatheRun got =
+            write_and_run(&cutcalc::api::grooving::handle_grooving_cycle, request, dialect);
         if (!got.ok) continue;
         check_facts(request, got);
         ++checked;
@@ -287,18 +199,21 @@ TEST(GroovingProgramAcceptance, EveryReferenceProgramInEveryDialectAndUnitIsAcce
 
 TEST(GroovingProgramAcceptance, DialectsGiveTheSameCanonicalMotionAsLinuxcnc) {
   constexpr double kTolerance = 1.5e-4;
-  for (const json& reference : ok_cases()) {
+  for (const json& reference : ok_reference_cases("next/grooving-cycle.json")) {
     for (const std::string& units : kUnits) {
-      const Written linuxcnc =
-          write_and_run(request_for(reference, "linuxcnc", units, 4), "linuxcnc");
+      const LatheRun linuxcnc =
+          write_and_run(&cutcalc::api::grooving::handle_grooving_cycle,
+                        request_with_program(reference, "linuxcnc", units, 4), "linuxcnc");
       ASSERT_FALSE(linuxcnc.canon.empty());
       for (const std::string dialect : {"fanuc", "sinumerik"}) {
         SCOPED_TRACE(reference.at("id").get<std::string>() + " " + dialect + " " + units);
-        const Written other = write_and_run(request_for(reference, dialect, units, 4), dialect);
+        const LatheRun other =
+            write_and_run(&cutcalc::api::grooving::handle_grooving_cycle,
+                          request_with_program(reference, dialect, units, 4), dialect);
         ASSERT_EQ(other.canon.size(), linuxcnc.canon.size());
         for (std::size_t i = 0; i < other.canon.size(); ++i) {
-          const Command& a = linuxcnc.canon[i];
-          const Command& b = other.canon[i];
+          const CanonCall& a = linuxcnc.canon[i];
+          const CanonCall& b = other.canon[i];
           ASSERT_EQ(a.name, b.name) << i;
           ASSERT_EQ(a.args.size(), b.args.size()) << a.name << " #" << i;
           for (std::size_t k = 0; k < a.args.size(); ++k) {

@@ -30,6 +30,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api/lathe_flat/lathe_flat_endpoint.h"
+#include "gcode/lathe_program_runs.h"
 #include "gcode/program_text.h"
 #include "gcode/rs274_runner.h"
 #include "support/program_text_rules.h"
@@ -42,52 +43,6 @@ using nlohmann::json;
 constexpr double kCanonStep = 1e-4;  // rs274 prints canonical arguments with 4 decimals
 const std::vector<std::string> kDialects = {"linuxcnc", "sinumerik"};
 const std::vector<std::string> kUnits = {"mm", "inch"};
-
-std::vector<json> ok_cases() {
-  std::ifstream in(std::string(CUTCALC_REFERENCE_DIR) + "/next/lathe-flat.json");
-  const json file = json::parse(in);
-  std::vector<json> cases;
-  for (const json& c : file.at("cases")) {
-    if (c.at("expect").at("status") == 200) cases.push_back(c);
-  }
-  return cases;
-}
-
-// The tool table of section 6.5: `T{n} P{n} D1 Z0`, n = 1..99.
-std::string tool_table() {
-  std::string table;
-  for (int t = 1; t <= 99; ++t) {
-    const std::string number = std::to_string(t);
-    table.append("T").append(number).append(" P").append(number).append(" D1 Z0\n");
-  }
-  return table;
-}
-
-struct Command {
-  std::string name;  // STRAIGHT_TRAVERSE, STRAIGHT_FEED, SET_FEED_RATE, SET_FEED_MODE
-  std::vector<double> args;
-};
-
-std::vector<Command> canonical(const std::string& output) {
-  std::vector<Command> commands;
-  std::istringstream in(output);
-  std::string line;
-  while (std::getline(in, line)) {
-    for (const char* call :
-         {" STRAIGHT_TRAVERSE(", " STRAIGHT_FEED(", " SET_FEED_RATE(", " SET_FEED_MODE("}) {
-      const std::string_view text(call);
-      const auto at = line.find(text);
-      if (at == std::string::npos) continue;
-      Command command{std::string(text.substr(1, text.size() - 2)), {}};
-      std::istringstream args(line.substr(at + text.size()));
-      std::string value;
-      while (std::getline(args, value, ','))
-        command.args.push_back(std::strtod(value.c_str(), nullptr));
-      commands.push_back(command);
-    }
-  }
-  return commands;
-}
 
 // A G1 block of the translated program, from its printed words.
 struct FeedBlock {
@@ -143,49 +98,8 @@ ProgramText read_text(const std::string& linuxcnc) {
   return out;
 }
 
-// The request of `reference` with its program options set to `dialect` and `units` and, when
-// given, `decimals`.
-json request_for(const json& reference, const std::string& dialect, const std::string& units,
-                 std::optional<int> decimals) {
-  json request = reference.at("request");
-  json program = request.value("program", json::object());
-  program["dialect"] = dialect;
-  program["units"] = units;
-  program.erase("program_number");
-  if (decimals) program["decimals"] = *decimals;
-  request["program"] = program;
-  return request;
-}
-
-struct Written {
-  json body;
-  std::string linuxcnc;  // translated
-  std::vector<Command> canon;
-  bool ok = false;
-};
-
-Written write_and_run(const json& request, const std::string& dialect) {
-  Written out;
-  const auto outcome = cutcalc::api::lathe_flat::handle_lathe_flat(request);
-  const auto* both = std::get_if<cutcalc::api::JsonWithText>(&outcome);
-  if (both == nullptr) {
-    ADD_FAILURE() << "no program for " << request.dump();
-    return out;
-  }
-  out.body = both->json;
-  EXPECT_EQ(both->json.at("program"), both->text);
-  cutcalc::testing::expect_text_rules(both->text, dialect);
-  out.linuxcnc = translate_to_linuxcnc(both->text, dialect);
-  const Rs274Run run = run_rs274_with_tools(out.linuxcnc, tool_table());
-  EXPECT_TRUE(run.started) << run.spawn_error;
-  EXPECT_EQ(run.exit_code, 0) << run.errors << "\n" << out.linuxcnc;
-  out.canon = canonical(run.output);
-  out.ok = run.started && run.exit_code == 0;
-  return out;
-}
-
 // Section 6.2 and 6.6 on the printed words; returns the text time and its bound.
-void check_text(const json& request, const Written& got, double& time_min, double& bound_min) {
+void check_text(const json& request, const LatheRun& got, double& time_min, double& bound_min) {
   const json& body = got.body;
   const double e = 0.5 * std::pow(10.0, -body.at("decimals").get<int>());
   const ProgramText text = read_text(got.linuxcnc);
@@ -251,7 +165,7 @@ struct CanonTime {
 // printed. When the printed X moves but canon's XYZ length is below 2 kCanonStep (the middle
 // blocks of a fine step), canon cannot resolve L: the block counts with the text's 1/F, as does
 // a block at the floor (counted in the result: its time on LinuxCNC is L / 0.1 < 1/F).
-CanonTime check_canon(const Written& got, double text_bound_min) {
+CanonTime check_canon(const LatheRun& got, double text_bound_min) {
   CanonTime out;
   const double machining_time = got.body.at("machining_time_min").get<double>();
   const std::vector<FeedBlock> text = read_text(got.linuxcnc).feeds;
@@ -261,7 +175,7 @@ CanonTime check_canon(const Written& got, double text_bound_min) {
   double bound_min = text_bound_min;
   std::size_t feeds = 0;
   int unresolved = 0;
-  for (const Command& command : got.canon) {
+  for (const CanonCall& command : got.canon) {
     if (command.name == "SET_FEED_RATE") {
       rate = command.args.at(0);
       continue;
@@ -313,15 +227,16 @@ CanonTime check_canon(const Written& got, double text_bound_min) {
 }
 
 TEST(LatheFlatProgramAcceptance, EveryReferenceProgramInBothDialectsAndUnitsIsAcceptedAndTimed) {
-  const auto cases = ok_cases();
+  const auto cases = ok_reference_cases("next/lathe-flat.json");
   ASSERT_GE(cases.size(), 11U);
   int checked = 0;
   for (const json& reference : cases) {
     for (const std::string& units : kUnits) {
       for (const std::string& dialect : kDialects) {
         SCOPED_TRACE(reference.at("id").get<std::string>() + " " + dialect + " " + units);
-        const json request = request_for(reference, dialect, units, std::nullopt);
-        const Written got = write_and_run(request, dialect);
+        const json request = request_with_program(reference, dialect, units, std::nullopt);
+        const LatheRun got =
+            write_and_run(&cutcalc::api::lathe_flat::handle_lathe_flat, request, dialect);
         if (!got.ok) continue;
         double text_time = 0, text_bound = 0;
         check_text(request, got, text_time, text_bound);
@@ -344,18 +259,20 @@ TEST(LatheFlatProgramAcceptance, EveryReferenceProgramInBothDialectsAndUnitsIsAc
 
 TEST(LatheFlatProgramAcceptance, SinumerikGivesTheSameCanonicalMotionAsLinuxcnc) {
   constexpr double kTolerance = 1.5e-4;
-  for (const json& reference : ok_cases()) {
+  for (const json& reference : ok_reference_cases("next/lathe-flat.json")) {
     for (const std::string& units : kUnits) {
       SCOPED_TRACE(reference.at("id").get<std::string>() + " " + units);
-      const Written linuxcnc =
-          write_and_run(request_for(reference, "linuxcnc", units, 4), "linuxcnc");
-      const Written other =
-          write_and_run(request_for(reference, "sinumerik", units, 4), "sinumerik");
+      const LatheRun linuxcnc =
+          write_and_run(&cutcalc::api::lathe_flat::handle_lathe_flat,
+                        request_with_program(reference, "linuxcnc", units, 4), "linuxcnc");
+      const LatheRun other =
+          write_and_run(&cutcalc::api::lathe_flat::handle_lathe_flat,
+                        request_with_program(reference, "sinumerik", units, 4), "sinumerik");
       ASSERT_FALSE(linuxcnc.canon.empty());
       ASSERT_EQ(other.canon.size(), linuxcnc.canon.size());
       for (std::size_t i = 0; i < other.canon.size(); ++i) {
-        const Command& a = linuxcnc.canon[i];
-        const Command& b = other.canon[i];
+        const CanonCall& a = linuxcnc.canon[i];
+        const CanonCall& b = other.canon[i];
         ASSERT_EQ(a.name, b.name) << i;
         ASSERT_EQ(a.args.size(), b.args.size()) << a.name << " #" << i;
         for (std::size_t k = 0; k < a.args.size(); ++k) {
