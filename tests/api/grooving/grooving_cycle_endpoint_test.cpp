@@ -10,6 +10,7 @@
 #include <string>
 
 #include "api/json_endpoint.h"
+#include "support/endpoint_probe.h"
 
 namespace cutcalc::testing {
 namespace {
@@ -26,40 +27,14 @@ json paper() {
           {"feed_per_rev_mm", 0.12}};
 }
 
+const EndpointProbe kEndpoint{kPath, &api::grooving::handle_grooving_cycle};
+
 api::ApiResponse answer(const json& request, const char* accept = "application/json") {
-  const std::string body = request.dump();
-  return api::run_json_endpoint({kPath, "application/json", body, "test", accept},
-                                &api::grooving::handle_grooving_cycle);
+  return kEndpoint.answer(request, accept);
 }
-
-json parsed(const api::ApiResponse& response) { return json::parse(response.body, nullptr, false); }
-
-// The pointers of a 422 answer's errors[]; {"<status>"} when the answer is not a 422.
-std::set<std::string> pointers(const json& request) {
-  const api::ApiResponse response = answer(request);
-  if (response.status != 422) return {"status " + std::to_string(response.status)};
-  std::set<std::string> out;
-  const json problem = parsed(response);
-  for (const auto& error : problem.at("errors")) {
-    out.insert(error.at("pointer").get<std::string>());
-  }
-  return out;
-}
+std::set<std::string> pointers(const json& request) { return kEndpoint.pointers(request); }
 
 std::set<std::string> only(const std::string& pointer) { return {pointer}; }
-
-json with(json request, const std::string& key, const json& value) {
-  request[key] = value;
-  return request;
-}
-json without(json request, const std::string& key) {
-  request.erase(key);
-  return request;
-}
-json with_program(json request, const json& program) {
-  request["program"] = program;
-  return request;
-}
 
 TEST(GroovingCycleEndpoint, WorkedExampleAnswersWithEveryMemberOfSection37) {
   const api::ApiResponse response = answer(paper());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "api/json_endpoint.h"
+#include "support/endpoint_probe.h"
 
 namespace cutcalc::testing {
 namespace {
@@ -24,49 +25,15 @@ json paper() {
   return {{"part_diameter_mm", 32}, {"flat_depth_mm", 1}, {"steps", 10}, {"feed_mm_per_min", 100}};
 }
 
+const EndpointProbe kEndpoint{kPath, &api::lathe_flat::handle_lathe_flat};
+
 api::ApiResponse answer(const json& request, const char* accept = "application/json") {
-  const std::string body = request.dump();
-  return api::run_json_endpoint({kPath, "application/json", body, "test", accept},
-                                &api::lathe_flat::handle_lathe_flat);
+  return kEndpoint.answer(request, accept);
 }
-
-json parsed(const api::ApiResponse& response) { return json::parse(response.body, nullptr, false); }
-
-// The pointers of a 422 answer's errors[]; {"status <n>"} when the answer is not a 422.
-std::set<std::string> pointers(const json& request) {
-  const api::ApiResponse response = answer(request);
-  if (response.status != 422) return {"status " + std::to_string(response.status)};
-  std::set<std::string> out;
-  const json problem = parsed(response);
-  for (const auto& error : problem.at("errors")) {
-    out.insert(error.at("pointer").get<std::string>());
-  }
-  return out;
-}
-
-// The codes of a 422 answer's errors[].
-std::set<std::string> codes(const json& request) {
-  std::set<std::string> out;
-  const json problem = parsed(answer(request));
-  if (!problem.contains("errors")) return out;
-  for (const auto& error : problem.at("errors")) out.insert(error.at("code").get<std::string>());
-  return out;
-}
+std::set<std::string> pointers(const json& request) { return kEndpoint.pointers(request); }
+std::set<std::string> codes(const json& request) { return kEndpoint.codes(request); }
 
 std::set<std::string> only(const std::string& pointer) { return {pointer}; }
-
-json with(json request, const std::string& key, const json& value) {
-  request[key] = value;
-  return request;
-}
-json without(json request, const std::string& key) {
-  request.erase(key);
-  return request;
-}
-json with_program(json request, const json& program) {
-  request["program"] = program;
-  return request;
-}
 
 TEST(LatheFlatEndpoint, WorkedExampleAnswersWithEveryMemberOfSection8) {
   const api::ApiResponse response = answer(paper());

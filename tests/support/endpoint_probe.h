@@ -1,0 +1,38 @@
+#pragma once
+// One calculation endpoint called through its handler, no server, as the API tests probe it
+// (the same pipeline as HTTP: api::run_json_endpoint), and the request edits they make.
+
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "api/json_endpoint.h"
+
+namespace cutcalc::testing {
+
+class EndpointProbe {
+ public:
+  EndpointProbe(const char* path, api::JsonHandler handler) : path_(path), handler_(handler) {}
+
+  [[nodiscard]] api::ApiResponse answer(const nlohmann::json& request,
+                                        const char* accept = "application/json") const;
+  // The pointers of a 422 answer's errors[]; {"status <n>"} when the answer is not a 422.
+  [[nodiscard]] std::set<std::string> pointers(const nlohmann::json& request) const;
+  // The codes of a 422 answer's errors[] (empty for another answer).
+  [[nodiscard]] std::set<std::string> codes(const nlohmann::json& request) const;
+
+ private:
+  const char* path_;
+  api::JsonHandler handler_;
+};
+
+// The body of `response` as JSON (discarded when it is not JSON).
+nlohmann::json parsed(const api::ApiResponse& response);
+
+// `request` with `key` set to `value`, without `key`, with `program` as its program object.
+nlohmann::json with(nlohmann::json request, const std::string& key, const nlohmann::json& value);
+nlohmann::json without(nlohmann::json request, const std::string& key);
+nlohmann::json with_program(nlohmann::json request, const nlohmann::json& program);
+
+}  // namespace cutcalc::testing
