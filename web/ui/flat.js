@@ -6,6 +6,8 @@ import { onCalculate } from './calculation.js';
 import { csvButton } from './export.js';
 import {
   at,
+  hideProgram,
+  showProgram,
   wireProgramDownload,
   fmt,
   h,
@@ -48,17 +50,13 @@ export function init() {
       calculated = null;
       download.disabled = true;
       showFailure(form, answer);
-      program.textContent = '';
-      delete program.dataset.fileName;
-      program.hidden = true;
+      hideProgram(program);
       result.append(h('p', { class: 'placeholder' }, t('result.no_results')), program);
       return;
     }
     calculated = body;
     download.disabled = false;
-    program.textContent = answer.json.program;
-    program.dataset.fileName = answer.json.file_name;
-    program.hidden = false;
+    showProgram(program, answer.json);
     result.append(
       ...flatResults(answer.json),
       flatDiagrams(

@@ -306,6 +306,18 @@ export async function downloadProgram(form, path, body, fallback) {
   }
 }
 
+// A section's program <pre>: the answer's program under its file name, or empty and hidden.
+export function showProgram(pre, answerJson) {
+  pre.textContent = answerJson.program;
+  pre.dataset.fileName = answerJson.file_name;
+  pre.hidden = false;
+}
+export function hideProgram(pre) {
+  pre.textContent = '';
+  delete pre.dataset.fileName;
+  pre.hidden = true;
+}
+
 // A "Download program" button: a click downloads the program of the request `currentBody()`
 // returns (nothing while there is none), the button disabled while it is fetched.
 export function wireProgramDownload(button, form, path, currentBody, fallback) {

@@ -8,6 +8,8 @@ import {
   h,
   noDiagram,
   readBody,
+  hideProgram,
+  showProgram,
   wireProgramDownload,
   showFailure,
   sym,
@@ -46,9 +48,7 @@ export function init() {
       calculated = null;
       download.disabled = true;
       showFailure(form, answer);
-      program.textContent = '';
-      delete program.dataset.fileName;
-      program.hidden = true;
+      hideProgram(program);
       result.append(
         h('p', { class: 'placeholder' }, t('result.no_results')),
         program,
@@ -57,9 +57,7 @@ export function init() {
     }
     calculated = body;
     download.disabled = false;
-    program.textContent = answer.json.program;
-    program.dataset.fileName = answer.json.file_name;
-    program.hidden = false;
+    showProgram(program, answer.json);
     result.append(...programResults(answer, result), h('h3', {}, t('result.g_code')), program);
   });
 
