@@ -3,6 +3,7 @@
 // inch conversion of X and the approach F only, the comment lines and an F that prints as zero.
 
 #include "domain/lathe_flat/flat_program.h"
+#include "domain/lathe_flat/lathe_flat_settings.h"
 
 #include <gtest/gtest.h>
 
@@ -22,14 +23,7 @@ using program::Units;
 
 constexpr double kPi = std::numbers::pi;
 
-LatheFlatParams paper() {
-  LatheFlatParams p;
-  p.part_diameter_mm = 32.0;
-  p.flat_depth_mm = 1.0;
-  p.steps = 10;
-  p.feed_mm_per_min = 100.0;
-  return p;
-}
+constexpr auto paper = settings::paper_flat;
 
 Result<FlatProgram> written(const LatheFlatParams& p, const ProgramOptions& options) {
   const auto flat = compute_lathe_flat(p);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "domain/lathe_flat/flatness.h"
+#include "domain/lathe_flat/lathe_flat_settings.h"
 
 namespace cutcalc::domain::lathe_flat {
 namespace {
@@ -19,15 +20,7 @@ using program::WarningCode;
 
 constexpr double kPi = std::numbers::pi;
 
-// Section 9: D32, t = 1, point tool, N = 10, f = 100 mm/min.
-LatheFlatParams paper() {
-  LatheFlatParams p;
-  p.part_diameter_mm = 32.0;
-  p.flat_depth_mm = 1.0;
-  p.steps = 10;
-  p.feed_mm_per_min = 100.0;
-  return p;
-}
+constexpr auto paper = settings::paper_flat;
 
 LatheFlatResult computed(const LatheFlatParams& p) {
   const auto result = compute_lathe_flat(p);
