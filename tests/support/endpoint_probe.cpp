@@ -1,5 +1,7 @@
 #include "support/endpoint_probe.h"
 
+#include <gtest/gtest.h>
+
 namespace cutcalc::testing {
 
 using nlohmann::json;
@@ -26,6 +28,24 @@ std::set<std::string> EndpointProbe::codes(const json& request) const {
   if (!problem.contains("errors")) return out;
   for (const auto& error : problem.at("errors")) out.insert(error.at("code").get<std::string>());
   return out;
+}
+
+void EndpointProbe::expect_program_download(const json& request,
+                                            const std::string& file_name) const {
+  const api::ApiResponse text = answer(request, "text/plain");
+  ASSERT_EQ(text.status, 200) << text.body;
+  EXPECT_EQ(text.content_type, "text/plain; charset=us-ascii");
+  const json body = parsed(answer(request));
+  EXPECT_EQ(text.body, body.at("program").get<std::string>());
+  EXPECT_EQ(body.at("file_name"), file_name);
+  bool named = false;
+  for (const auto& [name, value] : text.headers) {
+    if (name == "Content-Disposition") {
+      EXPECT_EQ(value, "attachment; filename=\"" + file_name + "\"");
+      named = true;
+    }
+  }
+  EXPECT_TRUE(named) << file_name;
 }
 
 json parsed(const api::ApiResponse& response) { return json::parse(response.body, nullptr, false); }

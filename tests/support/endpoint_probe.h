@@ -21,6 +21,9 @@ class EndpointProbe {
   [[nodiscard]] std::set<std::string> pointers(const nlohmann::json& request) const;
   // The codes of a 422 answer's errors[] (empty for another answer).
   [[nodiscard]] std::set<std::string> codes(const nlohmann::json& request) const;
+  // Expects the text/plain answer of `request` to be the JSON answer's program, downloaded as
+  // `file_name` (the JSON answer's file_name and the Content-Disposition attachment).
+  void expect_program_download(const nlohmann::json& request, const std::string& file_name) const;
 
  private:
   const char* path_;

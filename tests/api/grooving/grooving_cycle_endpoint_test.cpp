@@ -259,21 +259,7 @@ TEST(GroovingCycleEndpoint, PlainTextAnswerIsTheProgramWithItsFileName) {
                         Case{{{"dialect", "fanuc"}, {"program_number", 12}}, "O0012.nc"},
                         Case{{{"dialect", "sinumerik"}, {"name", "GROOVE_1"}}, "GROOVE_1.MPF"},
                         Case{{{"name", "RING_2"}, {"units", "inch"}}, "RING_2.ngc"}}) {
-    const json request = with_program(paper(), c.program);
-    const api::ApiResponse text = answer(request, "text/plain");
-    ASSERT_EQ(text.status, 200) << text.body;
-    EXPECT_EQ(text.content_type, "text/plain; charset=us-ascii");
-    const json body = parsed(answer(request));
-    EXPECT_EQ(text.body, body.at("program").get<std::string>());
-    EXPECT_EQ(body.at("file_name"), c.file_name);
-    bool named = false;
-    for (const auto& [name, value] : text.headers) {
-      if (name == "Content-Disposition") {
-        EXPECT_EQ(value, std::string("attachment; filename=\"") + c.file_name + "\"");
-        named = true;
-      }
-    }
-    EXPECT_TRUE(named) << c.file_name;
+    kEndpoint.expect_program_download(with_program(paper(), c.program), c.file_name);
   }
 }
 
