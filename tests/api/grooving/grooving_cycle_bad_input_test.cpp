@@ -8,6 +8,7 @@
 #include <random>
 
 #include "api/grooving/grooving_cycle_endpoint.h"
+#include "support/extreme_numbers.h"
 #include "support/sanity_checks.h"
 
 namespace cutcalc::testing {
@@ -16,34 +17,23 @@ namespace {
 using nlohmann::json;
 
 TEST(GroovingCycleBadInput, RandomExtremeRequestsAreAnsweredSanely) {
-  std::mt19937_64 engine(21);
-  static constexpr std::array<double, 10> kExtremes = {0.0,  1e-300, 1e-9, 0.12, 0.4,
-                                                       10.4, 220.0,  1e6,  -1.0, 1e300};
-  const auto any = [&engine] {
-    if (std::uniform_int_distribution<int>(0, 3)(engine) == 0) {
-      return kExtremes[std::uniform_int_distribution<std::size_t>(0, kExtremes.size() - 1)(engine)];
-    }
-    return std::pow(10.0, std::uniform_real_distribution<double>(-3.0, 3.0)(engine));
-  };
-  const auto pick = [&engine](int n) {
-    return std::uniform_int_distribution<int>(0, n - 1)(engine);
-  };
+  ExtremeNumbers numbers(21, {0.0, 1e-300, 1e-9, 0.12, 0.4, 10.4, 220.0, 1e6, -1.0, 1e300});
+  const auto any = [&numbers] { return numbers.any(); };
+  const auto pick = [&numbers](int n) { return numbers.pick(n); };
   static constexpr std::array<const char*, 3> kDialects = {"linuxcnc", "fanuc", "sinumerik"};
   int answered = 0;
   for (int i = 0; i < 400 && !HasFailure(); ++i) {
     const double start = any();
-    json request = {
-        {"groove_width_mm", any()},
-        {"start_diameter_mm", start},
-        {"groove_left_z_mm", std::uniform_real_distribution<double>(-500, 500)(engine)},
-        {"feed_per_rev_mm", any()},
-        {"nose_radius_mm", any()},
-        {"minor_edge_angle_deg", std::uniform_real_distribution<double>(0.0, 89.999)(engine)}};
+    json request = {{"groove_width_mm", any()},
+                    {"start_diameter_mm", start},
+                    {"groove_left_z_mm", numbers.uniform(-500, 500)},
+                    {"feed_per_rev_mm", any()},
+                    {"nose_radius_mm", any()},
+                    {"minor_edge_angle_deg", numbers.uniform(0.0, 89.999)}};
     if (pick(2) == 0) {
-      request["groove_depth_mm"] = start * std::uniform_real_distribution<double>(0.0, 0.6)(engine);
+      request["groove_depth_mm"] = start * numbers.uniform(0.0, 0.6);
     } else {
-      request["bottom_diameter_mm"] =
-          start * std::uniform_real_distribution<double>(0.0, 1.1)(engine);
+      request["bottom_diameter_mm"] = start * numbers.uniform(0.0, 1.1);
     }
     if (pick(3) == 0) request["shift_mm"] = any();
     if (pick(3) == 0) request["tool_width_mm"] = any();

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "api/lathe_flat/lathe_flat_endpoint.h"
+#include "support/extreme_numbers.h"
 #include "support/sanity_checks.h"
 
 namespace cutcalc::testing {
@@ -16,21 +17,10 @@ namespace {
 using nlohmann::json;
 
 TEST(LatheFlatBadInput, RandomExtremeRequestsAreAnsweredSanely) {
-  std::mt19937_64 engine(22);
-  static constexpr std::array<double, 10> kExtremes = {0.0,  1e-300, 1e-9, 0.5,  1.0,
-                                                       16.0, 32.0,   1e6,  -1.0, 1e300};
-  const auto any = [&engine] {
-    if (std::uniform_int_distribution<int>(0, 3)(engine) == 0) {
-      return kExtremes[std::uniform_int_distribution<std::size_t>(0, kExtremes.size() - 1)(engine)];
-    }
-    return std::pow(10.0, std::uniform_real_distribution<double>(-3.0, 3.0)(engine));
-  };
-  const auto pick = [&engine](int n) {
-    return std::uniform_int_distribution<int>(0, n - 1)(engine);
-  };
-  const auto fraction = [&engine](double high) {
-    return std::uniform_real_distribution<double>(0.0, high)(engine);
-  };
+  ExtremeNumbers numbers(22, {0.0, 1e-300, 1e-9, 0.5, 1.0, 16.0, 32.0, 1e6, -1.0, 1e300});
+  const auto any = [&numbers] { return numbers.any(); };
+  const auto pick = [&numbers](int n) { return numbers.pick(n); };
+  const auto fraction = [&numbers](double high) { return numbers.uniform(0.0, high); };
   static constexpr std::array<const char*, 4> kGeometry = {"flat_depth_mm", "flat_width_mm",
                                                            "axis_distance_mm", "across_flats_mm"};
   static constexpr std::array<const char*, 3> kDialects = {"linuxcnc", "sinumerik", "fanuc"};
@@ -54,7 +44,7 @@ TEST(LatheFlatBadInput, RandomExtremeRequestsAreAnsweredSanely) {
     if (pick(3) == 0) request["layer_depth_mm"] = any();
     if (pick(4) == 0) request["block_time_ms"] = any();
     if (pick(4) == 0) request["clearance_mm"] = any();
-    if (pick(4) == 0) request["z_mm"] = std::uniform_real_distribution<double>(-500, 500)(engine);
+    if (pick(4) == 0) request["z_mm"] = numbers.uniform(-500, 500);
     request["program"] = {
         {"dialect", kDialects[static_cast<std::size_t>(pick(pick(10) == 0 ? 3 : 2))]},
         {"units", pick(2) == 0 ? "mm" : "inch"},
