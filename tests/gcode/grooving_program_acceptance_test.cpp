@@ -210,16 +210,7 @@ TEST(GroovingProgramAcceptance, DialectsGiveTheSameCanonicalMotionAsLinuxcnc) {
         const LatheRun other =
             write_and_run(&cutcalc::api::grooving::handle_grooving_cycle,
                           request_with_program(reference, dialect, units, 4), dialect);
-        ASSERT_EQ(other.canon.size(), linuxcnc.canon.size());
-        for (std::size_t i = 0; i < other.canon.size(); ++i) {
-          const CanonCall& a = linuxcnc.canon[i];
-          const CanonCall& b = other.canon[i];
-          ASSERT_EQ(a.name, b.name) << i;
-          ASSERT_EQ(a.args.size(), b.args.size()) << a.name << " #" << i;
-          for (std::size_t k = 0; k < a.args.size(); ++k) {
-            EXPECT_NEAR(a.args[k], b.args[k], kTolerance) << a.name << " #" << i << " arg " << k;
-          }
-        }
+        expect_same_motion(linuxcnc, other, kTolerance);
       }
     }
   }

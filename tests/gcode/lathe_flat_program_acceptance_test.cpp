@@ -268,17 +268,7 @@ TEST(LatheFlatProgramAcceptance, SinumerikGivesTheSameCanonicalMotionAsLinuxcnc)
       const LatheRun other =
           write_and_run(&cutcalc::api::lathe_flat::handle_lathe_flat,
                         request_with_program(reference, "sinumerik", units, 4), "sinumerik");
-      ASSERT_FALSE(linuxcnc.canon.empty());
-      ASSERT_EQ(other.canon.size(), linuxcnc.canon.size());
-      for (std::size_t i = 0; i < other.canon.size(); ++i) {
-        const CanonCall& a = linuxcnc.canon[i];
-        const CanonCall& b = other.canon[i];
-        ASSERT_EQ(a.name, b.name) << i;
-        ASSERT_EQ(a.args.size(), b.args.size()) << a.name << " #" << i;
-        for (std::size_t k = 0; k < a.args.size(); ++k) {
-          EXPECT_NEAR(a.args[k], b.args[k], kTolerance) << a.name << " #" << i << " arg " << k;
-        }
-      }
+      expect_same_motion(linuxcnc, other, kTolerance);
     }
   }
 }

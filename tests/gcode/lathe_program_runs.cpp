@@ -95,4 +95,18 @@ LatheRun write_and_run(api::JsonHandler handler, const json& request, const std:
   return out;
 }
 
+void expect_same_motion(const LatheRun& reference, const LatheRun& other, double tolerance) {
+  ASSERT_FALSE(reference.canon.empty());
+  ASSERT_EQ(other.canon.size(), reference.canon.size());
+  for (std::size_t i = 0; i < other.canon.size(); ++i) {
+    const CanonCall& a = reference.canon[i];
+    const CanonCall& b = other.canon[i];
+    ASSERT_EQ(a.name, b.name) << i;
+    ASSERT_EQ(a.args.size(), b.args.size()) << a.name << " #" << i;
+    for (std::size_t k = 0; k < a.args.size(); ++k) {
+      EXPECT_NEAR(a.args[k], b.args[k], tolerance) << a.name << " #" << i << " arg " << k;
+    }
+  }
+}
+
 }  // namespace cutcalc::test::gcode

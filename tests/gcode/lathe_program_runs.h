@@ -41,4 +41,8 @@ struct LatheRun {
 LatheRun write_and_run(api::JsonHandler handler, const nlohmann::json& request,
                        const std::string& dialect);
 
+// Expects `other` to make the same canonical calls as `reference`, argument by argument within
+// `tolerance` (another dialect's program of the same request, translated).
+void expect_same_motion(const LatheRun& reference, const LatheRun& other, double tolerance);
+
 }  // namespace cutcalc::test::gcode
