@@ -230,6 +230,9 @@ constexpr std::array kCatalogue{
     Entry{ErrorCode::shutting_down, "shutting down", "сервис останавливается"},
     Entry{ErrorCode::connection_limit, "the server is at its connection limit; retry later",
           "сервер достиг предела числа соединений; повторите позже"},
+    Entry{ErrorCode::calculations_busy,
+          "the server is busy with other long calculations; retry after {retry_after_s} s",
+          "сервер занят другими долгими расчётами; повторите через {retry_after_s} с"},
     Entry{ErrorCode::internal_error, "an internal error occurred (a bug in cutcalc); it was logged",
           "внутренняя ошибка (ошибка в cutcalc); она записана в журнал"},
 };

@@ -45,6 +45,13 @@ struct CalculationRoute {
 
 std::span<const CalculationRoute> calculation_routes();
 
+// Whether a request's work can be heavy: an endpoint that writes a program does as much work as
+// the program has blocks (a request field decides: up to megabytes, tens of milliseconds), so the
+// service runs it off the event loops that answer the light requests.
+constexpr bool can_be_heavy(const CalculationRoute& route) {
+  return route.forms == AnswerForms::json_and_plain_text_program;
+}
+
 // The route of `path`, or nullptr.
 const CalculationRoute* find_calculation_route(std::string_view path);
 

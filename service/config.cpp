@@ -2,6 +2,7 @@
 
 #include <array>
 #include <charconv>
+#include <string>
 #include <string_view>
 
 namespace cutcalc::service {
@@ -19,7 +20,13 @@ constexpr std::array kSettings = {
     Setting{"--log-level", "CUTCALC_LOG_LEVEL"},
     Setting{"--log-format", "CUTCALC_LOG_FORMAT"},
     Setting{"--cors-origin", "CUTCALC_CORS_ORIGINS"},
+    Setting{"--calculation-threads", "CUTCALC_CALCULATION_THREADS"},
+    Setting{"--calculation-queue", "CUTCALC_CALCULATION_QUEUE"},
+    Setting{"--reuse-port", "CUTCALC_REUSE_PORT"},
 };
+
+// A flag that may stand alone, meaning "on".
+constexpr std::string_view kSwitch = "--reuse-port";
 
 std::optional<long> parse_long(std::string_view text, long min, long max) {
   long value = 0;
@@ -70,6 +77,26 @@ std::string apply(Config& config, std::string_view flag, const std::string& valu
       }
       rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
     }
+  } else if (flag == "--calculation-threads") {
+    const auto threads = parse_long(value, 1, 256);
+    if (!threads) {
+      return "--calculation-threads must be an integer 1..256, got '" + value + "'";
+    }
+    config.http.calculation_threads = static_cast<std::size_t>(*threads);
+  } else if (flag == "--calculation-queue") {
+    const auto queue = parse_long(value, 1, 100000);
+    if (!queue) {
+      return "--calculation-queue must be an integer 1..100000, got '" + value + "'";
+    }
+    config.http.calculation_queue_limit = static_cast<std::size_t>(*queue);
+  } else if (flag == kSwitch) {
+    if (value == "on" || value == "true" || value == "1") {
+      config.http.reuse_port = true;
+    } else if (value == "off" || value == "false" || value == "0") {
+      config.http.reuse_port = false;
+    } else {
+      return "--reuse-port takes on or off, got '" + value + "'";
+    }
   } else if (flag == "--log-format") {
     if (value == "text") {
       config.log_format = LogFormat::text;
@@ -85,21 +112,32 @@ std::string apply(Config& config, std::string_view flag, const std::string& valu
 }  // namespace
 
 std::string usage() {
-  return "usage: cutcalc [--host H] [--port P] [--threads N] [--log-level L] [--log-format F]\n"
-         "               [--cors-origin ORIGIN ...]\n"
-         "  --host H        address to listen on (default 127.0.0.1; env CUTCALC_HOST)\n"
-         "  --port P        TCP port, 0 = any free port (default 8080; env CUTCALC_PORT)\n"
-         "  --threads N     event-loop threads serving connections and requests\n"
-         "                  (default: one per usable CPU: the affinity mask, capped by\n"
-         "                  the cgroup's cpu.max quota; env CUTCALC_THREADS)\n"
-         "  --log-level L   trace|debug|info|warn|error|critical|off (default info;\n"
-         "                  env CUTCALC_LOG_LEVEL)\n"
-         "  --log-format F  text|json (default text; env CUTCALC_LOG_FORMAT)\n"
-         "  --cors-origin O origin allowed to call from a browser, e.g. https://mes.example;\n"
-         "                  repeatable or comma-separated, * for any (default none;\n"
-         "                  env CUTCALC_CORS_ORIGINS)\n"
-         "  --routes        print the calculation endpoints as JSON and exit (for the tools)\n"
-         "  --help, --version\n";
+  return std::string(
+      "usage: cutcalc [--host H] [--port P] [--threads N] [--log-level L] [--log-format F]\n"
+      "               [--cors-origin ORIGIN ...] [--calculation-threads N]\n"
+      "               [--calculation-queue N] [--reuse-port]\n"
+      "  --host H        address to listen on (default 127.0.0.1; env CUTCALC_HOST)\n"
+      "  --port P        TCP port, 0 = any free port (default 8080; env CUTCALC_PORT)\n"
+      "  --threads N     event-loop threads serving connections and requests\n"
+      "                  (default: one per usable CPU: the affinity mask, capped by\n"
+      "                  the cgroup's cpu.max quota; env CUTCALC_THREADS)\n"
+      "  --log-level L   trace|debug|info|warn|error|critical|off (default info;\n"
+      "                  env CUTCALC_LOG_LEVEL)\n"
+      "  --log-format F  text|json (default text; env CUTCALC_LOG_FORMAT)\n"
+      "  --cors-origin O origin allowed to call from a browser, e.g. https://mes.example;\n"
+      "                  repeatable or comma-separated, * for any (default none;\n"
+      "                  env CUTCALC_CORS_ORIGINS)\n"
+      "  --calculation-threads N  threads for the calculations that can be heavy (the\n"
+      "                  programs), off the event loops (default: as many as the\n"
+      "                  event loops; env CUTCALC_CALCULATION_THREADS)\n"
+      "  --calculation-queue N  such calculations waiting for a thread at most; beyond,\n"
+      "                  503 with Retry-After (default " +
+      std::to_string(HttpTuning{}.calculation_queue_limit) +
+      "; env CUTCALC_CALCULATION_QUEUE)\n"
+      "  --reuse-port    share the port with other processes (SO_REUSEPORT); without\n"
+      "                  it a port in use is an error (env CUTCALC_REUSE_PORT=on|off)\n"
+      "  --routes        print the calculation endpoints as JSON and exit (for the tools)\n"
+      "  --help, --version\n");
 }
 
 ConfigOutcome parse_config(const std::vector<std::string>& args,
@@ -128,6 +166,8 @@ ConfigOutcome parse_config(const std::vector<std::string>& args,
     if (const auto equals = arg.find('='); equals != std::string_view::npos) {
       flag = arg.substr(0, equals);
       value = std::string(arg.substr(equals + 1));
+    } else if (arg == kSwitch) {
+      value = "on";
     } else if (i + 1 < args.size()) {
       value = args[++i];
     } else {

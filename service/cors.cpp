@@ -13,36 +13,38 @@ bool CorsPolicy::allows(std::string_view origin) const {
   });
 }
 
-httplib::Headers CorsPolicy::headers_for(std::string_view origin, bool origin_unread) const {
-  httplib::Headers headers;
+std::vector<ResponseHeader> CorsPolicy::headers_for(std::string_view origin,
+                                                    bool origin_unread) const {
+  std::vector<ResponseHeader> headers;
   if (origins_.empty()) {
     return headers;
   }
   // Caches must keep answers for different origins apart.
-  headers.emplace("Vary", "Origin");
+  headers.push_back({"Vary", "Origin"});
   const bool any = std::find(origins_.begin(), origins_.end(), "*") != origins_.end();
   if (origin.empty() && origin_unread && any) {
-    headers.emplace("Access-Control-Allow-Origin", "*");
+    headers.push_back({"Access-Control-Allow-Origin", "*"});
   } else if (allows(origin)) {
-    headers.emplace("Access-Control-Allow-Origin", std::string(origin));
+    headers.push_back({"Access-Control-Allow-Origin", std::string(origin)});
   } else {
     return headers;
   }
-  headers.emplace("Access-Control-Expose-Headers", "X-Request-Id, Content-Disposition");
+  headers.push_back({"Access-Control-Expose-Headers", "X-Request-Id, Content-Disposition"});
   return headers;
 }
 
-void CorsPolicy::decorate(const httplib::Request& req, httplib::Response& res) const {
-  for (const auto& [name, value] : headers_for(req.get_header_value("Origin"), false)) {
-    res.set_header(name, value);
+void CorsPolicy::decorate(std::string_view origin, HttpResponse& res) const {
+  if (origins_.empty()) return;
+  for (ResponseHeader& header : headers_for(origin, false)) {
+    res.headers.push_back(std::move(header));
   }
 }
 
-httplib::Headers CorsPolicy::rejection_headers(std::string_view origin) const {
+std::vector<ResponseHeader> CorsPolicy::rejection_headers(std::string_view origin) const {
   return headers_for(origin, origin.empty());
 }
 
-void CorsPolicy::answer_options(httplib::Response& res, const std::string& allow) {
+void CorsPolicy::answer_options(HttpResponse& res, const std::string& allow) {
   res.status = 204;
   res.set_header("Allow", allow);
   if (res.has_header("Access-Control-Allow-Origin")) {

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include <httplib.h>
+#include "service/http_response.h"
 
 namespace cutcalc::service {
 
@@ -16,22 +16,23 @@ class CorsPolicy {
 
   // Adds the CORS response headers when the request's Origin is allowed. Call it once per
   // response: every header it sets is appended.
-  void decorate(const httplib::Request& req, httplib::Response& res) const;
+  void decorate(std::string_view origin, HttpResponse& res) const;
 
   // The same headers for an answer the engine gives by itself (400, 413, 503), so that a browser
   // sees the problem instead of a network error. `origin` is empty when the head was not read that
   // far: then only a policy that allows any origin can say so ("*").
-  [[nodiscard]] httplib::Headers rejection_headers(std::string_view origin) const;
+  [[nodiscard]] std::vector<ResponseHeader> rejection_headers(std::string_view origin) const;
 
   // An OPTIONS request to a known route, after decorate(): 204 with Allow, plus the rest of the
   // preflight answer when the Origin is allowed. `allow` is the route's method list.
-  static void answer_options(httplib::Response& res, const std::string& allow);
+  static void answer_options(HttpResponse& res, const std::string& allow);
 
  private:
   [[nodiscard]] bool allows(std::string_view origin) const;
   // Vary, and Allow-Origin with Expose-Headers when allowed. `origin_unread`: the request's Origin
   // is not known, so only an any-origin policy can allow it.
-  [[nodiscard]] httplib::Headers headers_for(std::string_view origin, bool origin_unread) const;
+  [[nodiscard]] std::vector<ResponseHeader> headers_for(std::string_view origin,
+                                                        bool origin_unread) const;
 
   std::vector<std::string> origins_;  // exact origins, or "*" for any
 };

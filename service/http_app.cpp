@@ -1,11 +1,12 @@
 #include "service/http_app.h"
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <exception>
 #include <string>
+#include <utility>
 
-#include <httplib.h>
 #include <spdlog/spdlog.h>
 #include <nlohmann/json.hpp>
 
@@ -15,7 +16,6 @@
 #include "api/problem.h"
 #include "api/routes.h"
 #include "service/build_info.h"
-#include "service/http_connection.h"
 #include "service/http_tuning.h"
 #include "service/logging.h"
 #include "service/request_id.h"
@@ -26,66 +26,63 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// What the middleware knows about the request this thread is serving. httplib serves a request
-// from its first byte to its access-log callback on one thread, so thread-local state is exact.
-struct RequestState {
-  Clock::time_point start{};
-  const char* route = "unmatched";  // metric label: a known path or "unmatched", never user text
-  bool counted_in_flight = false;
-  std::string request_id;  // also in the X-Request-Id response header; kept to avoid lookups
-};
-thread_local RequestState t_request;
-
 constexpr const char* kRequestIdHeader = "X-Request-Id";
 constexpr const char* kNoSniffHeader = "X-Content-Type-Options";
+// What a client refused by a full calculation pool is told to wait: the queue drains in well
+// under a second at the largest programs' tens of milliseconds each.
+constexpr int kBusyRetryAfterSeconds = 1;
 
-void write(httplib::Response& res, api::ApiResponse&& response) {
+void write(HttpResponse& res, api::ApiResponse&& response) {
   res.status = response.status;
-  for (const auto& [name, value] : response.headers) {
+  for (auto& [name, value] : response.headers) {
     // One Vary field: the CORS policy may have set one already (Origin).
     if (name == "Vary") {
-      if (const auto said = res.headers.find("Vary"); said != res.headers.end()) {
-        said->second += ", " + value;
+      if (auto said = std::find_if(res.headers.begin(), res.headers.end(),
+                                   [](const ResponseHeader& h) { return h.name == "Vary"; });
+          said != res.headers.end()) {
+        said->value += ", " + value;
         continue;
       }
     }
-    res.set_header(name, value);
+    res.headers.push_back({std::move(name), std::move(value)});
   }
-  // As set_content() does (the library has no overload that takes the body by move).
   res.body = std::move(response.body);
-  res.set_header("Content-Type", response.content_type);
+  res.content_type = std::move(response.content_type);
 }
 
-// The request headers cutcalc reads, each the first of its name (as get_header_value() gives),
-// found in one pass: the library's lookups compare names through a libc call per character.
+// The request headers cutcalc reads, each the first of its name, found in one pass.
 struct ReadHeaders {
   std::string_view content_type;
   std::string_view accept;
   std::string_view accept_language;
   std::string_view request_id;
+  std::string_view origin;
 };
 
-ReadHeaders read_headers(const httplib::Request& req) {
+ReadHeaders read_headers(const HttpRequest& req) {
   ReadHeaders read;
   bool content_type = false;
   bool accept = false;
   bool accept_language = false;
   bool request_id = false;
-  const auto take = [](bool& taken, std::string_view& into, const std::string& value) {
+  bool origin = false;
+  const auto take = [](bool& taken, std::string_view& into, std::string_view value) {
     if (!taken) {
       taken = true;
       into = value;
     }
   };
-  for (const auto& [name, value] : req.headers) {
-    if (api::iequals_ascii(name, "Content-Type")) {
-      take(content_type, read.content_type, value);
-    } else if (api::iequals_ascii(name, "Accept")) {
-      take(accept, read.accept, value);
-    } else if (api::iequals_ascii(name, "Accept-Language")) {
-      take(accept_language, read.accept_language, value);
-    } else if (api::iequals_ascii(name, kRequestIdHeader)) {
-      take(request_id, read.request_id, value);
+  for (const HeaderField& field : req.fields) {
+    if (api::iequals_ascii(field.name, "Content-Type")) {
+      take(content_type, read.content_type, field.value);
+    } else if (api::iequals_ascii(field.name, "Accept")) {
+      take(accept, read.accept, field.value);
+    } else if (api::iequals_ascii(field.name, "Accept-Language")) {
+      take(accept_language, read.accept_language, field.value);
+    } else if (api::iequals_ascii(field.name, kRequestIdHeader)) {
+      take(request_id, read.request_id, field.value);
+    } else if (api::iequals_ascii(field.name, "Origin")) {
+      take(origin, read.origin, field.value);
     }
   }
   return read;
@@ -113,63 +110,55 @@ std::string problem_instance(std::string_view target) {
   return instance;
 }
 
-api::Language language_of(const httplib::Request& req) {
-  return api::preferred_language(read_headers(req).accept_language);
-}
-
-void write_problem(const httplib::Request& req, httplib::Response& res,
-                   const api::Problem& problem) {
-  write(res, api::problem_response(problem, problem_instance(req.path),
-                                   res.get_header_value(kRequestIdHeader), language_of(req)));
-}
-
 api::Problem problem(api::ProblemKind kind, api::ErrorCode code,
                      nlohmann::json params = nlohmann::json::object()) {
   return {kind, api::Message{code, std::move(params)}, {}};
 }
 
-// Problems for statuses the HTTP library sets by itself, before any handler runs.
-api::Problem library_problem(const httplib::Request& req, int status) {
-  switch (status) {
-    case 404:
-      return problem(api::ProblemKind::not_found, api::ErrorCode::no_such_resource,
-                     {{"path", problem_instance(req.path)}});
-    case 413:
-      return problem(api::ProblemKind::payload_too_large, api::ErrorCode::body_too_large);
-    default:
-      return problem(api::ProblemKind::bad_request, api::ErrorCode::malformed_http,
-                     {{"reason", "status " + std::to_string(status)}});
-  }
-}
-
-void reply_json(httplib::Response& res, const nlohmann::json& body) {
+void reply_json(HttpResponse& res, const nlohmann::json& body) {
   res.status = 200;
   res.set_content(body.dump(), "application/json");
 }
 
 }  // namespace
 
-HttpApp::HttpApp(Config config)
-    : config_(std::move(config)),
-      server_(std::make_unique<TunedServer>(
-          config_.http, [this](const EngineError& error) { return engine_error_response(error); })),
-      cors_(config_.cors_origins) {
-  install_middleware();
+// One request's bookkeeping: what its metrics, access log and problem bodies need, owned, so that
+// a calculation on the pool can finish the request after the request's views are gone.
+struct HttpApp::Exchange {
+  Clock::time_point start;
+  const char* route = "unmatched";  // metric label: a known path or "unmatched", never user text
+  std::string_view method;          // a metric label (Metrics::observe maps it to a static one)
+  std::string path;                 // the request's path, for the log and problem instances
+  std::string request_id;
+  std::string remote;  // the peer's address, when the access log is on
+  api::Language language = api::Language::en;
+
+  void write_problem(HttpResponse& res, const api::Problem& said) const {
+    write(res, api::problem_response(said, problem_instance(path), request_id, language));
+  }
+};
+
+HttpApp::HttpApp(Config config) : config_(std::move(config)), cors_(config_.cors_origins) {
   install_routes();
+  engine_ = std::make_unique<EventLoopEngine>(
+      event_loop_settings(config_.http),
+      [this](const HttpRequest& request) { return answer(request); },
+      [this](const EngineError& error) { return engine_error_response(error); },
+      [this] { return listener_.stopped(); }, counters_);
 }
 
 HttpApp::~HttpApp() = default;
 
 int HttpApp::bind() {
-  return bind_with_backlog(*server_, config_.host.c_str(), config_.port,
-                           config_.http.listen_backlog);
+  return listener_.open(
+      {config_.host, config_.port, config_.http.listen_backlog, config_.http.reuse_port});
 }
 
 bool HttpApp::serve() {
-  const bool served = server_->listen_after_bind();
+  const bool served = listener_.run([this](int sock) { engine_->adopt(sock); });
   // The listener is closed; answer what is in flight before the caller tears the app down.
   const auto limit = std::max(config_.http.limits.request_timeout, std::chrono::milliseconds{1000});
-  if (!server_->drain(limit)) {
+  if (!engine_->drain(limit)) {
     spdlog::warn("shutdown: requests still in flight after {} ms were dropped", limit.count());
   }
   return served;
@@ -177,10 +166,10 @@ bool HttpApp::serve() {
 
 void HttpApp::shutdown() {
   draining_.store(true);
-  server_->stop();
+  listener_.stop();
 }
 
-void HttpApp::serve_connection(int sock) { server_->adopt_connection(sock); }
+void HttpApp::serve_connection(int sock) { engine_->adopt(sock); }
 
 std::string HttpApp::engine_error_response(const EngineError& error) {
   // The head could not be trusted, so its Accept-Language is not read: these answer in English.
@@ -193,166 +182,156 @@ std::string HttpApp::engine_error_response(const EngineError& error) {
                     {{"reason", std::string(error.detail)}});
   const std::string request_id = generate_request_id();
   const std::string instance = problem_instance(error.target);
-  const api::ApiResponse problem = api::problem_response(
-      said, instance, request_id, api::Language::en, api::LanguageChoice::fixed);
-  metrics_.observe("unmatched", error.method, problem.status, 0.0);
+  HttpResponse res;
+  res.headers = cors_.rejection_headers(error.origin);
+  write(res, api::problem_response(said, instance, request_id, api::Language::en,
+                                   api::LanguageChoice::fixed));
+  res.set_header(kRequestIdHeader, request_id);
+  res.set_header(kNoSniffHeader, "nosniff");
+  metrics_.observe("unmatched", error.method, res.status, 0.0);
   if (access_log_enabled()) {
     log_access(
-        {error.method.empty() ? "-" : error.method, instance, problem.status, 0.0, request_id, {}});
+        {error.method.empty() ? "-" : error.method, instance, res.status, 0.0, request_id, {}});
   }
-  httplib::Headers headers = cors_.rejection_headers(error.origin);
-  headers.insert(problem.headers.begin(), problem.headers.end());
-  headers.emplace(kRequestIdHeader, request_id);
-  headers.emplace(kNoSniffHeader, "nosniff");
-  return closing_response(problem.status, problem.content_type, problem.body, headers);
+  return closing_response(res);
 }
 
-void HttpApp::install_middleware() {
-  server_->set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-    t_request.start = Clock::now();
-    t_request.route = "unmatched";
-    t_request.counted_in_flight = true;
-    metrics_.enter();
-    // Browsers must not guess a type other than the declared one (a G-code file is not HTML).
-    // Set per response: the library's set_default_headers() broke every response of the -O3
-    // build against Debian's libcpp-httplib 0.11.4 (empty replies), while the ASan build worked.
-    res.set_header(kNoSniffHeader, "nosniff");
-    const ReadHeaders headers = read_headers(req);
-    if (is_acceptable_request_id(headers.request_id)) {
-      t_request.request_id = headers.request_id;
-    } else {
-      t_request.request_id = generate_request_id();
-    }
-    res.set_header(kRequestIdHeader, t_request.request_id);
+Reply HttpApp::answer(const HttpRequest& req) {
+  Exchange exchange;
+  exchange.start = Clock::now();
+  exchange.method = req.method;
+  exchange.path = req.path;
+  metrics_.enter();
+  const ReadHeaders headers = read_headers(req);
+  exchange.request_id = is_acceptable_request_id(headers.request_id)
+                            ? std::string(headers.request_id)
+                            : generate_request_id();
+  exchange.language = api::preferred_language(headers.accept_language);
+  if (access_log_enabled()) exchange.remote = req.remote_ip();
 
-    // Once per response, whatever answers it (set_header appends, so a second call repeats them).
-    cors_.decorate(req, res);
+  HttpResponse res;
+  // Browsers must not guess a type other than the declared one (a G-code file is not HTML).
+  res.set_header(kNoSniffHeader, "nosniff");
+  res.set_header(kRequestIdHeader, exchange.request_id);
+  cors_.decorate(headers.origin, res);
+  try {
     const RouteEntry* route = routes_.find(req.path);
     if (route == nullptr) {
-      write_problem(req, res,
-                    problem(api::ProblemKind::not_found, api::ErrorCode::no_such_resource,
-                            {{"path", problem_instance(req.path)}}));
-      return httplib::Server::HandlerResponse::Handled;
+      exchange.write_problem(res,
+                             problem(api::ProblemKind::not_found, api::ErrorCode::no_such_resource,
+                                     {{"path", problem_instance(req.path)}}));
+      return finish(exchange, std::move(res));
     }
-    t_request.route = route->path.c_str();
+    exchange.route = route->path.c_str();
     if (req.method == "OPTIONS") {
       CorsPolicy::answer_options(res, route->allow);
-      return httplib::Server::HandlerResponse::Handled;
+      return finish(exchange, std::move(res));
     }
     if (!RouteTable::allows(*route, req.method)) {
-      write_problem(
-          req, res,
-          problem(api::ProblemKind::method_not_allowed, api::ErrorCode::method_not_allowed,
-                  {{"method", req.method}, {"path", route->path}, {"allow", route->allow}}));
+      exchange.write_problem(
+          res, problem(api::ProblemKind::method_not_allowed, api::ErrorCode::method_not_allowed,
+                       {{"method", req.method}, {"path", route->path}, {"allow", route->allow}}));
       res.set_header("Allow", route->allow);
-      return httplib::Server::HandlerResponse::Handled;
+      return finish(exchange, std::move(res));
     }
-    if (route->calculation != nullptr) {
-      // Answered here, from the body the engine framed: the library would otherwise match every
-      // route's regex and copy the body first.
-      write(res, api::run_json_endpoint(
-                     {req.path, headers.content_type, framed_request_body(), t_request.request_id,
-                      headers.accept, api::preferred_language(headers.accept_language)},
-                     route->calculation));
-      return httplib::Server::HandlerResponse::Handled;
+    if (route->calculation == nullptr) {
+      route->get(req, res);
+      return finish(exchange, std::move(res));
     }
-    return httplib::Server::HandlerResponse::Unhandled;
-  });
+    const api::ApiRequest call{route->path,         headers.content_type, req.body,
+                               exchange.request_id, headers.accept,       exchange.language};
+    if (!route->heavy) {
+      write(res, api::run_json_endpoint(call, route->calculation));
+      return finish(exchange, std::move(res));
+    }
+    // On the pool: it owns copies of what the calculation reads.
+    const api::JsonHandler handler = route->calculation;
+    auto run = [this, exchange, res, handler, body = std::string(req.body),
+                content_type = std::string(headers.content_type),
+                accept = std::string(headers.accept)]() mutable {
+      try {
+        write(res, api::run_json_endpoint({exchange.route, content_type, body, exchange.request_id,
+                                           accept, exchange.language},
+                                          handler));
+        return finish(exchange, std::move(res));
+      } catch (const std::exception& e) {
+        return internal_error(exchange, e);
+      }
+    };
+    auto refuse = [this, exchange, res]() mutable {
+      exchange.write_problem(
+          res, problem(api::ProblemKind::unavailable, api::ErrorCode::calculations_busy,
+                       {{"retry_after_s", kBusyRetryAfterSeconds}}));
+      res.set_header("Retry-After", std::to_string(kBusyRetryAfterSeconds));
+      return finish(exchange, std::move(res));
+    };
+    return DeferredResponse{std::move(run), std::move(refuse)};
+  } catch (const std::exception& e) {
+    return internal_error(exchange, e);
+  }
+}
 
-  // Statuses set by the library itself (body too large, malformed request line) get a problem
-  // body too; responses that already have a body are ours and are left alone.
-  server_->set_error_handler(
-      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
-        if (!res.body.empty()) {
-          return httplib::Server::HandlerResponse::Unhandled;
-        }
-        if (!res.has_header(kNoSniffHeader)) {
-          res.set_header(kNoSniffHeader, "nosniff");
-        }
-        if (!res.has_header(kRequestIdHeader)) {
-          res.set_header(kRequestIdHeader, generate_request_id());
-        }
-        write_problem(req, res, library_problem(req, res.status));
-        return httplib::Server::HandlerResponse::Handled;
-      }));
+HttpResponse HttpApp::internal_error(const Exchange& exchange, const std::exception& error) {
+  spdlog::error("unhandled exception on {} {} (request {}): {}", exchange.method, exchange.path,
+                exchange.request_id, error.what());
+  HttpResponse res;
+  res.set_header(kNoSniffHeader, "nosniff");
+  res.set_header(kRequestIdHeader, exchange.request_id);
+  exchange.write_problem(res,
+                         problem(api::ProblemKind::internal_error, api::ErrorCode::internal_error));
+  return finish(exchange, std::move(res));
+}
 
-  server_->set_exception_handler(
-      [](const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
-        std::string what = "unknown exception";
-        try {
-          std::rethrow_exception(std::move(error));
-        } catch (const std::exception& e) {
-          what = e.what();
-        } catch (...) {
-        }
-        spdlog::error("unhandled exception on {} {} (request {}): {}", req.method, req.path,
-                      res.get_header_value(kRequestIdHeader), what);
-        write_problem(req, res,
-                      problem(api::ProblemKind::internal_error, api::ErrorCode::internal_error));
-      });
-
-  server_->set_logger([this](const httplib::Request& req, const httplib::Response& res) {
-    const double seconds =
-        t_request.counted_in_flight
-            ? std::chrono::duration<double>(Clock::now() - t_request.start).count()
-            : 0.0;
-    if (t_request.counted_in_flight) {
-      metrics_.leave();
-    }
-    metrics_.observe(t_request.route, req.method, res.status, seconds);
-    if (access_log_enabled()) {
-      log_access({req.method, req.path, res.status, seconds * 1000.0,
-                  res.get_header_value(kRequestIdHeader), req.remote_addr});
-    }
-    t_request.route = "unmatched";
-    t_request.counted_in_flight = false;
-  });
+HttpResponse HttpApp::finish(const Exchange& exchange, HttpResponse res) {
+  const double seconds = std::chrono::duration<double>(Clock::now() - exchange.start).count();
+  metrics_.leave();
+  metrics_.observe(exchange.route, exchange.method, res.status, seconds);
+  if (access_log_enabled()) {
+    log_access({exchange.method, exchange.path, res.status, seconds * 1000.0, exchange.request_id,
+                exchange.remote});
+  }
+  return res;
 }
 
 void HttpApp::install_routes() {
-  // Calculations are answered at routing (install_middleware); the library only serves the rest.
   for (const api::CalculationRoute& route : api::calculation_routes()) {
-    routes_.add_calculation(route.path, route.handler);
+    routes_.add_calculation(route.path, route.handler, api::can_be_heavy(route));
   }
 
-  routes_.add("/healthz", RouteMethod::get);
-  server_->Get("/healthz", [](const httplib::Request&, httplib::Response& res) {
+  routes_.add_get("/healthz", [](const HttpRequest&, HttpResponse& res) {
     reply_json(res, {{"status", "ok"}});
   });
 
-  routes_.add("/readyz", RouteMethod::get);
-  server_->Get("/readyz", [this](const httplib::Request& req, httplib::Response& res) {
+  routes_.add_get("/readyz", [this](const HttpRequest& req, HttpResponse& res) {
     if (draining_.load()) {
-      write_problem(req, res,
-                    problem(api::ProblemKind::unavailable, api::ErrorCode::shutting_down));
+      write(res, api::problem_response(
+                     problem(api::ProblemKind::unavailable, api::ErrorCode::shutting_down),
+                     problem_instance(req.path), std::string(res.header(kRequestIdHeader)),
+                     api::preferred_language(req.header("Accept-Language"))));
       return;
     }
     reply_json(res, {{"status", "ready"}});
   });
 
-  routes_.add("/version", RouteMethod::get);
-  server_->Get("/version", [](const httplib::Request&, httplib::Response& res) {
+  routes_.add_get("/version", [](const HttpRequest&, HttpResponse& res) {
     reply_json(res, {{"name", "cutcalc"},
                      {"version", build_version()},
                      {"commit", build_commit()},
                      {"build_type", build_type()}});
   });
 
-  routes_.add("/metrics", RouteMethod::get);
-  server_->Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
-    res.set_content(metrics_.render() +
-                        render_connection_metrics(server_->counters(), server_->open_connections()),
-                    "text/plain; version=0.0.4; charset=utf-8");
+  routes_.add_get("/metrics", [this](const HttpRequest&, HttpResponse& res) {
+    res.set_content(
+        metrics_.render() + render_connection_metrics(counters_, engine_->open_connections()),
+        "text/plain; version=0.0.4; charset=utf-8");
   });
 
-  routes_.add("/openapi.yaml", RouteMethod::get);
-  server_->Get("/openapi.yaml", [](const httplib::Request&, httplib::Response& res) {
-    const std::string_view yaml = embedded_openapi_yaml();
-    res.set_content(yaml.data(), yaml.size(), "application/yaml");
+  routes_.add_get("/openapi.yaml", [](const HttpRequest&, HttpResponse& res) {
+    res.set_content(std::string(embedded_openapi_yaml()), "application/yaml");
   });
 
   // The calculator page at / and its assets under /ui/ (service/web_assets.h).
-  install_web_routes(*server_, routes_);
+  install_web_routes(routes_);
 }
 
 }  // namespace cutcalc::service

@@ -1,13 +1,17 @@
 #pragma once
-// The HTTP service: the tuned server, the calculation and operational routes, and the middleware
-// every request goes through (request id, 404/405, problem bodies, access log, metrics).
+// The HTTP service: the listener, the engine, the routes (calculations and operational ones) and
+// what every request goes through (request id, 404/405, problem bodies, access log, metrics).
 
 #include <atomic>
+#include <chrono>
+#include <exception>
 #include <memory>
+#include <string>
 
 #include "service/config.h"
 #include "service/cors.h"
-#include "service/http_tuning.h"
+#include "service/http_event_loop.h"
+#include "service/listener.h"
 #include "service/metrics.h"
 #include "service/route_table.h"
 
@@ -20,8 +24,10 @@ class HttpApp {
   HttpApp(const HttpApp&) = delete;
   HttpApp& operator=(const HttpApp&) = delete;
 
-  // Binds the configured host and port; returns the bound port (useful with port 0) or -1.
+  // Binds the configured host and port; returns the bound port (useful with port 0) or -1, with
+  // bind_error() saying why.
   int bind();
+  [[nodiscard]] const std::string& bind_error() const { return listener_.error(); }
   // Serves until shutdown() is called; returns after in-flight requests have been answered.
   bool serve();
   // Thread-safe: readiness turns 503, the listener closes, in-flight requests finish.
@@ -32,18 +38,28 @@ class HttpApp {
   // Every path served and its Allow value (for tests that must cover every route).
   [[nodiscard]] const RouteTable& routes() const { return routes_; }
 
+  // One request, as the engine hands it over (also for tests without a socket).
+  Reply answer(const HttpRequest& request);
+
  private:
+  struct Exchange;  // one request's bookkeeping, from answer() to its response
   // The response for an error the engine answers by itself (framing, size, connection cap).
   std::string engine_error_response(const EngineError& error);
-  void install_middleware();
+  Reply answer_calculation(const HttpRequest& request, const RouteEntry& route, Exchange exchange);
+  // Metrics and access log of a finished request; returns `res`.
+  HttpResponse finish(const Exchange& exchange, HttpResponse res);
+  // A 500 problem for a handler that threw (a bug): logged, counted, answered.
+  HttpResponse internal_error(const Exchange& exchange, const std::exception& error);
   void install_routes();
 
   Config config_;
   Metrics metrics_;
-  std::unique_ptr<TunedServer> server_;
   RouteTable routes_;
   CorsPolicy cors_;
+  ConnectionCounters counters_;
   std::atomic<bool> draining_{false};
+  Listener listener_;
+  std::unique_ptr<EventLoopEngine> engine_;  // last: its threads call into everything above
 };
 
 }  // namespace cutcalc::service

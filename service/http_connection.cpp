@@ -37,17 +37,7 @@ SocketAddresses::Address address_of(int fd, bool peer) {
   return address;
 }
 
-thread_local std::string_view t_framed_body;
-
 }  // namespace
-
-std::string_view framed_request_body() { return t_framed_body; }
-
-FramedRequestBody::FramedRequestBody(std::string_view body) : previous_(t_framed_body) {
-  t_framed_body = body;
-}
-
-FramedRequestBody::~FramedRequestBody() { t_framed_body = previous_; }
 
 const SocketAddresses::Address& SocketAddresses::peer() const {
   if (!peer_) peer_ = address_of(fd_, true);
@@ -57,28 +47,6 @@ const SocketAddresses::Address& SocketAddresses::peer() const {
 const SocketAddresses::Address& SocketAddresses::local() const {
   if (!local_) local_ = address_of(fd_, false);
   return *local_;
-}
-
-ssize_t ConnectionStream::read(char* ptr, size_t size) {
-  const std::size_t n = std::min(size, request_.size());
-  if (n > 0) std::memcpy(ptr, request_.data(), n);
-  request_.remove_prefix(n);
-  return static_cast<ssize_t>(n);
-}
-
-ssize_t ConnectionStream::write(const char* ptr, size_t size) {
-  output_.append(ptr, size);
-  return static_cast<ssize_t>(size);
-}
-
-void ConnectionStream::get_remote_ip_and_port(std::string& ip, int& port) const {
-  ip = addresses_.peer().ip;
-  port = addresses_.peer().port;
-}
-
-void ConnectionStream::get_local_ip_and_port(std::string& ip, int& port) const {
-  ip = addresses_.local().ip;
-  port = addresses_.local().port;
 }
 
 }  // namespace cutcalc::service

@@ -53,8 +53,13 @@ class OpenCount {
 }  // namespace
 
 struct EventLoopEngine::Connection {
-  Connection(UniqueFd socket, std::size_t requests, std::atomic<std::size_t>& open)
-      : counted(open), fd(std::move(socket)), addresses(fd.get()), requests_left(requests) {}
+  Connection(UniqueFd socket, std::uint64_t connection_id, std::size_t requests,
+             std::atomic<std::size_t>& open)
+      : counted(open),
+        fd(std::move(socket)),
+        id(connection_id),
+        addresses(fd.get()),
+        requests_left(requests) {}
 
   [[nodiscard]] std::string_view unread() const {
     return {input.data() + input_begin, input_end - input_begin};
@@ -69,6 +74,7 @@ struct EventLoopEngine::Connection {
 
   OpenCount counted;  // first: released last
   UniqueFd fd;
+  std::uint64_t id;  // unique in the engine's life: a completion for a reused descriptor is stale
   SocketAddresses addresses;
   // Bytes read: [input_begin, input_end) not yet consumed. Grown, never zero-filled per read.
   std::vector<char> input;
@@ -76,17 +82,30 @@ struct EventLoopEngine::Connection {
   std::size_t input_end = 0;
   std::string output;  // responses; [output_offset, size) not yet sent
   std::size_t output_offset = 0;
-  std::string scratch;  // a request rewritten for the library (library_request())
+  // The request being parsed: its fields, a chunked body decoded, a percent-decoded path.
+  std::vector<HeaderField> fields;
+  std::string decoded_body;
+  std::string path_scratch;
   std::size_t requests_left;
 
-  bool peer_eof = false;       // the client will send nothing more
-  bool last_response = false;  // close once the output is sent
-  bool lingering = false;      // last response sent, SHUT_WR done; dropping input until EOF
-  bool in_request = false;     // part of a request is buffered (request deadline runs)
-  bool continue_sent = false;  // 100 Continue sent for the request being received
-  std::uint32_t events = 0;    // the epoll interest registered
-  Clock::time_point request_deadline{};  // of the request being received
-  Clock::time_point deadline{};          // of whatever the connection waits for now
+  bool peer_eof = false;           // the client will send nothing more
+  bool last_response = false;      // close once the output is sent
+  bool lingering = false;          // last response sent, SHUT_WR done; dropping input until EOF
+  bool in_request = false;         // part of a request is buffered (request deadline runs)
+  bool continue_sent = false;      // 100 Continue sent for the request being received
+  bool awaiting = false;           // a request of this connection is on the pool
+  bool awaited_head_only = false;  // of that request: a HEAD
+  ConnectionAfter awaited_after = ConnectionAfter::close;  // of that request
+  std::uint32_t events = 0;                                // the epoll interest registered
+  Clock::time_point request_deadline{};                    // of the request being received
+  Clock::time_point deadline{};  // of whatever the connection waits for now
+};
+
+// A response computed on the pool, addressed to the connection that asked for it.
+struct EventLoopEngine::Completion {
+  int fd = -1;
+  std::uint64_t connection_id = 0;
+  HttpResponse response;
 };
 
 class EventLoopEngine::Loop {
@@ -122,10 +141,22 @@ class EventLoopEngine::Loop {
     {
       const std::lock_guard lock(inbox_mutex_);
       if (quit_) return;  // destroyed here: closed
-      was_empty = inbox_.empty();
+      was_empty = inbox_.empty() && completions_.empty();
       inbox_.push_back(std::move(connection));
     }
     if (was_empty) wake();  // otherwise a wake-up is already pending
+  }
+
+  // From a pool thread: the response of a deferred request.
+  void complete(Completion completion) {
+    bool was_empty = false;
+    {
+      const std::lock_guard lock(inbox_mutex_);
+      if (quit_) return;
+      was_empty = inbox_.empty() && completions_.empty();
+      completions_.push_back(std::move(completion));
+    }
+    if (was_empty) wake();
   }
 
  private:
@@ -172,10 +203,27 @@ class EventLoopEngine::Loop {
     std::uint64_t count = 0;
     [[maybe_unused]] const auto n = ::read(wake_fd_.get(), &count, sizeof(count));
     std::vector<std::unique_ptr<Connection>> arrived;
+    std::vector<Completion> completed;
     {
       const std::lock_guard lock(inbox_mutex_);
       if (quit_) return false;
       arrived.swap(inbox_);
+      completed.swap(completions_);
+    }
+    for (Completion& done : completed) {
+      const auto it = table_.find(done.fd);
+      if (it == table_.end() || it->second->id != done.connection_id) continue;  // closed meanwhile
+      Connection& connection = *it->second;
+      connection.awaiting = false;
+      if (engine_.stopping_()) connection.awaited_after = ConnectionAfter::close;
+      if (connection.awaited_after == ConnectionAfter::close) connection.last_response = true;
+      write_response(done.response, connection.awaited_head_only, connection.awaited_after,
+                     connection.output);
+      try {
+        advance(connection);
+      } catch (...) {
+        close(done.fd);
+      }
     }
     for (auto& owned : arrived) {
       const int fd = owned->fd.get();
@@ -191,6 +239,7 @@ class EventLoopEngine::Loop {
     while (!table_.empty()) close(table_.begin()->first);
     const std::lock_guard lock(inbox_mutex_);
     inbox_.clear();
+    completions_.clear();
   }
 
   // Sets the epoll interest; false when epoll refused (the caller closes the connection).
@@ -261,8 +310,10 @@ class EventLoopEngine::Loop {
       if (done) close(fd);
       return;
     }
-    if ((events & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0 && !connection.has_output() &&
-        !connection.last_response && !connection.peer_eof) {
+    // Waiting for the pool, only a failed socket is news (its interest is empty meanwhile).
+    if (connection.awaiting && (events & (EPOLLHUP | EPOLLERR)) != 0) return close(fd);
+    if ((events & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0 && !connection.awaiting &&
+        !connection.has_output() && !connection.last_response && !connection.peer_eof) {
       switch (read_input(connection)) {
         case Read::data:
         case Read::again:
@@ -294,6 +345,13 @@ class EventLoopEngine::Loop {
       }
       if (!more) break;  // else serving stopped at the high-water mark: serve on
     }
+    if (connection.awaiting) {
+      // No reading until the answer is in: pipelined requests wait their turn, and an EOF or a
+      // full buffer cannot wake the loop over and over. The pool bounds the wait.
+      connection.deadline = Clock::time_point::max();
+      if (!watch(connection, 0)) close(fd);
+      return;
+    }
     const auto now = Clock::now();
     if (connection.last_response) return linger(connection, now);
     if (connection.peer_eof) return close(fd);  // a partial request can never complete
@@ -311,10 +369,11 @@ class EventLoopEngine::Loop {
   // True when it stopped at the output high-water mark with input left to serve.
   bool serve_buffered(Connection& connection) {
     const EventLoopSettings& settings = engine_.settings_;
-    while (!connection.last_response && !connection.unread().empty()) {
+    while (!connection.last_response && !connection.awaiting && !connection.unread().empty()) {
       if (connection.pending_output() >= kOutputHighWater) return true;
       const std::string_view unread = connection.unread();
-      const RequestFrame frame = classify_request(unread, settings.limits);
+      const RequestFrame frame =
+          classify_request(unread, settings.limits, &connection.fields, &connection.decoded_body);
       if (frame.verdict == RequestFrame::Verdict::incomplete) {
         if (unread.size() >= settings.limits.max_buffered_bytes()) {  // cannot happen: framing
           reject(connection, {400, "the request is over the size limit", {}, {}, {}});
@@ -331,28 +390,46 @@ class EventLoopEngine::Loop {
         reject(connection, {frame.status, frame.reason, frame.method, frame.target, frame.origin});
         return false;
       }
-      const bool close_connection = connection.requests_left <= 1 || engine_.stopping_();
-      bool connection_closed = false;
-      bool ok = false;
-      {
-        const std::string_view request = library_request(unread, frame, connection.scratch);
-        const FramedRequestBody body(
-            request.substr(request.size() - std::min(frame.body_bytes, request.size())));
-        ConnectionStream stream(request, connection.output, connection.addresses);
-        try {
-          ok = engine_.serve_(stream, close_connection, connection_closed);
-        } catch (...) {  // the library catches handler exceptions; anything else ends the line
-          ok = false;
-        }
-      }
+      HttpRequest request = framed_request(unread, frame, connection.fields,
+                                           connection.decoded_body, connection.path_scratch);
+      request.addresses = &connection.addresses;
+      const bool head_only = request.method == "HEAD";
+      const bool keep_alive =
+          request.wants_keep_alive() && connection.requests_left > 1 && !engine_.stopping_();
+      const ConnectionAfter after = !keep_alive      ? ConnectionAfter::close
+                                    : request.http11 ? ConnectionAfter::keep_alive
+                                                     : ConnectionAfter::keep_alive_http10;
+      Reply reply = engine_.serve_(request);
+      // The request's views die here: the reply owns what it needs.
       connection.consume(frame.wire_bytes);
       connection.in_request = false;
       connection.continue_sent = false;
       if (connection.requests_left > 1) --connection.requests_left;
       engine_.counters_.requests.fetch_add(1, std::memory_order_relaxed);
-      if (!ok || connection_closed || close_connection) connection.last_response = true;
+      if (auto* deferred = std::get_if<DeferredResponse>(&reply)) {
+        if (defer(connection, *deferred, head_only, after)) return false;
+        write_response(deferred->refuse(), head_only, after, connection.output);
+      } else {
+        write_response(std::get<HttpResponse>(reply), head_only, after, connection.output);
+      }
+      if (after == ConnectionAfter::close) connection.last_response = true;
     }
     return false;
+  }
+
+  // Hands a deferred request to the pool; false when its queue is full.
+  bool defer(Connection& connection, const DeferredResponse& work, bool head_only,
+             ConnectionAfter after) {
+    const int fd = connection.fd.get();
+    const std::uint64_t id = connection.id;
+    const bool queued = engine_.pool_->try_submit([this, fd, id, run = work.run] {
+      complete({fd, id, run()});
+    });
+    if (!queued) return false;
+    connection.awaiting = true;
+    connection.awaited_head_only = head_only;
+    connection.awaited_after = after;
+    return true;
   }
 
   void start_request(Connection& connection) {
@@ -423,8 +500,9 @@ class EventLoopEngine::Loop {
           engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
         }
         expired.push_back(fd);
-      } else if (stopping && (connection->lingering ||
-                              (!connection->in_request && !connection->has_output()))) {
+      } else if (stopping &&
+                 (connection->lingering || (!connection->in_request && !connection->awaiting &&
+                                            !connection->has_output()))) {
         idle_at_stop.push_back(fd);
       }
     }
@@ -449,14 +527,14 @@ class EventLoopEngine::Loop {
   UniqueFd wake_fd_;
   std::mutex inbox_mutex_;
   std::vector<std::unique_ptr<Connection>> inbox_;              // guarded by inbox_mutex_
+  std::vector<Completion> completions_;                         // guarded by inbox_mutex_
   bool quit_ = false;                                           // guarded by inbox_mutex_
   std::unordered_map<int, std::unique_ptr<Connection>> table_;  // loop thread only
   std::thread thread_;
 };
 
-EventLoopEngine::EventLoopEngine(EventLoopSettings settings, ServeRequest serve,
-                                 RenderError render_error, Stopping stopping,
-                                 ConnectionCounters& counters)
+EventLoopEngine::EventLoopEngine(EventLoopSettings settings, Serve serve, RenderError render_error,
+                                 Stopping stopping, ConnectionCounters& counters)
     : settings_(std::move(settings)),
       serve_(std::move(serve)),
       render_error_(std::move(render_error)),
@@ -464,9 +542,14 @@ EventLoopEngine::EventLoopEngine(EventLoopSettings settings, ServeRequest serve,
       counters_(counters) {
   const std::size_t loops = std::max<std::size_t>(settings_.loops, 1);
   for (std::size_t i = 0; i < loops; ++i) loops_.push_back(std::make_unique<Loop>(*this));
+  pool_ = std::make_unique<WorkPool>(settings_.pool, counters_.calculations);
 }
 
-EventLoopEngine::~EventLoopEngine() { loops_.clear(); }
+// The pool first: its last jobs post their answers to loops that must still exist.
+EventLoopEngine::~EventLoopEngine() {
+  pool_.reset();
+  loops_.clear();
+}
 
 bool EventLoopEngine::drain(std::chrono::milliseconds limit) const {
   const auto until = Clock::now() + limit;
@@ -502,8 +585,8 @@ void EventLoopEngine::adopt(int sock) {
   std::unique_ptr<Connection> connection;
   try {
     connection = std::make_unique<Connection>(
-        std::move(fd), std::max<std::size_t>(settings_.keep_alive_max_requests, 1),
-        open_connections_);
+        std::move(fd), next_connection_id_.fetch_add(1, std::memory_order_relaxed),
+        std::max<std::size_t>(settings_.keep_alive_max_requests, 1), open_connections_);
   } catch (...) {
     return;  // out of memory: the descriptor closes with `fd`
   }

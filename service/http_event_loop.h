@@ -1,26 +1,28 @@
 #pragma once
-// The HTTP engine: epoll loops that own the connections, frame each request strictly
-// (service/http_framing.h) and hand a complete one to the HTTP library to parse, route and answer
-// (service/http_connection.h: memory in, memory out). No request ever blocks a thread: a request
-// is served only once all of it has arrived, and a response the socket cannot take at once waits
-// for EPOLLOUT. Idle keep-alive connections and slow clients cost a few KiB and no thread.
+// The HTTP engine: epoll loops that own the connections, frame and parse each request strictly,
+// once (service/http_framing.h), hand it to the app as a value (service/http_request.h) and write
+// the app's response (service/http_response.h). No request ever blocks a loop: a request is served
+// only once all of it has arrived, a response the socket cannot take at once waits for EPOLLOUT,
+// and a calculation that can be heavy runs on the calculation pool (service/work_pool.h) while the
+// loop goes on serving other connections. Idle keep-alive connections and slow clients cost a few
+// KiB and no thread.
 //
 // Ownership (the invariant the code keeps; Boost.Beast's async server is the model):
 //  - A connection is one `Connection`, held by exactly one `std::unique_ptr` at any moment: in
 //    adopt() (accept thread), then in one loop's inbox (under the inbox mutex), then in that loop's
 //    table. It never leaves its loop and is never shared; only its loop's thread touches it.
 //  - epoll knows a connection by its file descriptor (`data.fd`), never by a pointer; the loop
-//  looks
-//    the descriptor up in its table, so an event for a connection that is gone finds nothing.
+//    looks the descriptor up in its table, so an event for a connection that is gone finds nothing.
+//  - Work on the pool owns copies of what it reads and never sees the connection: its response
+//    comes back to the loop's inbox addressed by descriptor and connection id, and the loop drops
+//    it if that connection has closed meanwhile (a reused descriptor has another id).
+//  - While a connection waits for the pool it serves nothing more, so pipelined requests are
+//    answered in order.
 //  - The loop registers the descriptor with epoll after the connection is in its table, and removes
 //    it (EPOLL_CTL_DEL, checked) before the connection leaves the table; only then is it destroyed,
 //    and its `UniqueFd` closes the descriptor.
 //  - New connections are taken from the inbox after a batch of events is handled, so a descriptor
 //    number reused by the kernel can never meet a stale event of the same batch.
-//
-// Why loops and no thread pool: one blocking thread per connection cost ~19 us of CPU per request
-// (a third in context switches) against ~12 us on loops; cutcalc's handlers compute for
-// microseconds (the largest polygon program ~0.1 s), so they run on the loop thread.
 
 #include <atomic>
 #include <chrono>
@@ -29,13 +31,15 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
-
-#include <httplib.h>
 
 #include "service/http_connection.h"
 #include "service/http_framing.h"
 #include "service/http_limits.h"
+#include "service/http_request.h"
+#include "service/http_response.h"
+#include "service/work_pool.h"
 
 namespace cutcalc::service {
 
@@ -44,6 +48,7 @@ struct EventLoopSettings {
   std::size_t keep_alive_max_requests = 10000;
   std::size_t max_connections = 10000;  // beyond: 503 and close
   HttpLimits limits;                    // framing and timers
+  WorkPoolSettings pool;                // the calculation pool
   bool tcp_nodelay = true;
 };
 
@@ -57,22 +62,33 @@ struct EngineError {
   std::string_view origin;  // the request's Origin field; empty when it was not read
 };
 
+// Work the app hands to the calculation pool instead of answering on the loop.
+struct DeferredResponse {
+  // Runs on a pool thread; owns copies of everything it reads (the request's views die with the
+  // call that gave them). Must not throw.
+  std::function<HttpResponse()> run;
+  // The answer when the pool's queue is full (503 with Retry-After); runs on the loop.
+  std::function<HttpResponse()> refuse;
+};
+
+// The app's answer to one request: a response now, or work for the pool.
+using Reply = std::variant<HttpResponse, DeferredResponse>;
+
 class EventLoopEngine {
  public:
-  // httplib's process_request() for one request read from `stream`.
-  using ServeRequest =
-      std::function<bool(httplib::Stream& stream, bool close_connection, bool& connection_closed)>;
+  // Answers one request; runs on a loop thread and must not throw.
+  using Serve = std::function<Reply(const HttpRequest& request)>;
   // The whole response (status line to body) for an engine error; it must say Connection: close.
   // Called on a loop thread or the accept thread.
   using RenderError = std::function<std::string(const EngineError& error)>;
   // True once the server has been stopped: idle connections close, responses say close.
   using Stopping = std::function<bool()>;
 
-  EventLoopEngine(EventLoopSettings settings, ServeRequest serve, RenderError render_error,
+  EventLoopEngine(EventLoopSettings settings, Serve serve, RenderError render_error,
                   Stopping stopping, ConnectionCounters& counters);
   EventLoopEngine(const EventLoopEngine&) = delete;
   EventLoopEngine& operator=(const EventLoopEngine&) = delete;
-  // Closes every connection and joins the loops.
+  // Finishes the pool's work, then closes every connection and joins the loops.
   ~EventLoopEngine();
 
   // Takes ownership of a connected socket (TCP, or any stream socket). Never blocks.
@@ -86,16 +102,19 @@ class EventLoopEngine {
 
  private:
   struct Connection;
+  struct Completion;
   class Loop;
 
   const EventLoopSettings settings_;
-  const ServeRequest serve_;
+  const Serve serve_;
   const RenderError render_error_;
   const Stopping stopping_;
   ConnectionCounters& counters_;
   std::atomic<std::size_t> open_connections_{0};  // adopted and not yet closed
   std::atomic<std::size_t> next_loop_{0};
-  std::vector<std::unique_ptr<Loop>> loops_;  // last: its threads use everything above
+  std::atomic<std::uint64_t> next_connection_id_{1};
+  std::vector<std::unique_ptr<Loop>> loops_;  // their threads use everything above
+  std::unique_ptr<WorkPool> pool_;            // its jobs post to the loops: goes first
 };
 
 }  // namespace cutcalc::service

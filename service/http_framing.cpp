@@ -4,6 +4,8 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "api/header_text.h"
 
@@ -194,8 +196,11 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
 
 }  // namespace
 
-RequestFrame classify_request(std::string_view input, const HttpLimits& limits) {
+RequestFrame classify_request(std::string_view input, const HttpLimits& limits,
+                              std::vector<HeaderField>* fields_out, std::string* decoded_body) {
   RequestFrame frame;
+  if (fields_out != nullptr) fields_out->clear();
+  if (decoded_body != nullptr) decoded_body->clear();
   std::size_t pos = 0;
   // Empty lines before the request line are ignored (RFC 9112 2.2).
   while (input.substr(pos, 2) == "\r\n") pos += 2;
@@ -250,6 +255,7 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits) 
   if (!http11 && version != "HTTP/1.0") {
     return reject(frame, 400, "the HTTP version is not HTTP/1.1 or HTTP/1.0");
   }
+  frame.http11 = http11;
 
   // field lines, up to the empty line
   std::size_t fields = 0;
@@ -270,6 +276,7 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits) 
       return reject(frame, 400, "a header field line is over the size limit");
     }
     if (++fields > limits.max_fields) return reject(frame, 400, "too many header fields");
+    if (fields_out != nullptr) fields_out->push_back({name, value});
     if (api::iequals_ascii(name, "content-length")) {
       if (!parse_content_length(value, has_length, length)) {
         return reject(frame, 400, "Content-Length must be one number (digits only)");
@@ -295,6 +302,7 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits) 
     }
   }
   frame.head_bytes = pos - start;
+  frame.body_offset = pos;
 
   if (http11 ? hosts != 1 : hosts > 1) {
     return reject(frame, 400, "an HTTP/1.1 request needs exactly one Host header");
@@ -306,7 +314,7 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits) 
       return reject(frame, 400, "the only transfer coding accepted is chunked");
     }
     frame.chunked = true;
-    return frame_chunked(input, pos, frame, limits, nullptr);
+    return frame_chunked(input, pos, frame, limits, decoded_body);
   }
   if (length > limits.max_body_bytes) {
     return reject(frame, 413, "the request body is over the size limit");
@@ -318,38 +326,17 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits) 
   return frame;
 }
 
-std::string_view library_request(std::string_view input, const RequestFrame& frame,
-                                 std::string& scratch) {
-  const std::size_t start = frame.skipped_bytes;
-  if (!frame.chunked && !frame.expects_continue) {
-    return input.substr(start, frame.wire_bytes - start);
-  }
-  // The frame is complete, so every line below is known to be well-formed.
-  scratch.clear();
-  std::size_t pos = start;
-  std::string_view line;
-  next_line(input, pos, line);
-  scratch.append(line).append("\r\n");
-  pos += line.size() + 2;
-  for (;;) {
-    next_line(input, pos, line);
-    pos += line.size() + 2;
-    if (line.empty()) break;
-    std::string_view name;
-    std::string_view value;
-    split_field(line, name, value);
-    if (api::iequals_ascii(name, "transfer-encoding") || api::iequals_ascii(name, "expect"))
-      continue;
-    scratch.append(line).append("\r\n");
-  }
-  if (!frame.chunked) {
-    scratch.append("\r\n").append(input.substr(pos, frame.body_bytes));
-    return scratch;
-  }
-  scratch.append("Content-Length: ").append(std::to_string(frame.body_bytes)).append("\r\n\r\n");
-  RequestFrame walk = frame;
-  frame_chunked(input, pos, walk, HttpLimits{SIZE_MAX / 4, SIZE_MAX / 4, SIZE_MAX / 4}, &scratch);
-  return scratch;
+HttpRequest framed_request(std::string_view input, const RequestFrame& frame,
+                           std::span<const HeaderField> fields, std::string_view decoded_body,
+                           std::string& path_scratch) {
+  HttpRequest request;
+  request.method = frame.method;
+  request.target = frame.target;
+  request.path = request_path(frame.target, path_scratch);
+  request.http11 = frame.http11;
+  request.fields = fields;
+  request.body = frame.chunked ? decoded_body : input.substr(frame.body_offset, frame.body_bytes);
+  return request;
 }
 
 }  // namespace cutcalc::service

@@ -1,9 +1,8 @@
 #pragma once
 // Request framing (RFC 9112 sections 2-7): where one request ends and the next begins on a
-// connection. The engine decides this here, once, before the HTTP library sees a byte; the library
-// then parses only a request that is already framed (library_request()), and the engine consumes
-// exactly `wire_bytes` afterwards, whatever the library read. So no response, error or quirk of the
-// library can leave an unread body to be taken for the next request.
+// connection, and the request itself (method, target, fields, body), in the same single pass over
+// its bytes. The engine consumes exactly `wire_bytes` after answering, so no response or error can
+// leave an unread body to be taken for the next request.
 //
 // Strict where framing is at stake, as RFC 9112 asks of a server that may sit behind a proxy:
 //  - every line of the head ends in CRLF; a bare CR or LF, a NUL, obs-fold, whitespace before a
@@ -18,8 +17,12 @@
 // Every rejection ends the connection after its response.
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "service/http_request.h"
 
 #include "service/http_limits.h"
 
@@ -38,21 +41,26 @@ struct RequestFrame {
   bool expects_continue = false;  // Expect: 100-continue (HTTP/1.1)
   std::string_view method;        // from the request line, once it is complete and valid
   std::string_view target;
-  std::string_view origin;  // the Origin field, once read (CORS headers on a rejection too)
+  std::string_view origin;      // the Origin field, once read (CORS headers on a rejection too)
+  bool http11 = true;           // false: HTTP/1.0
+  std::size_t body_offset = 0;  // where the body starts in the input (after the head)
 
   // reject:
   int status = 0;           // 400 or 413
   std::string_view reason;  // a fixed sentence for the problem's detail
 };
 
-// Frames the request at the start of `input` (unread bytes of a connection).
-RequestFrame classify_request(std::string_view input, const HttpLimits& limits);
+// Frames the request at the start of `input` (unread bytes of a connection). When given,
+// `fields` receives the header fields (views of `input`) and `decoded_body` a chunked body's
+// content; both are cleared first and complete only when the verdict is `complete`.
+RequestFrame classify_request(std::string_view input, const HttpLimits& limits,
+                              std::vector<HeaderField>* fields = nullptr,
+                              std::string* decoded_body = nullptr);
 
-// The bytes the HTTP library is to parse for a complete frame: a view of `input` when the request
-// can be read as it came (Content-Length or no body, no Expect), otherwise the request rewritten
-// into `scratch` with its body decoded and a Content-Length in place of Transfer-Encoding, and
-// without Expect (the engine answers 100-continue itself, so the library must not again).
-std::string_view library_request(std::string_view input, const RequestFrame& frame,
-                                 std::string& scratch);
+// The request of a complete frame: views of `input`, `fields` and `decoded_body` (the outputs of
+// classify_request), and of `path_scratch` when the path needed percent-decoding.
+HttpRequest framed_request(std::string_view input, const RequestFrame& frame,
+                           std::span<const HeaderField> fields, std::string_view decoded_body,
+                           std::string& path_scratch);
 
 }  // namespace cutcalc::service

@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   HttpApp app(config);
   const int port = app.bind();
   if (port < 0) {
-    spdlog::critical("cannot listen on {}:{}", config.host, config.port);
+    spdlog::critical("cannot listen on {}:{}: {}", config.host, config.port, app.bind_error());
     return 1;
   }
   signals.on_shutdown([&app](const char* signal_name) {

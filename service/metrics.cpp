@@ -75,7 +75,7 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
   };
   const Counter all[] = {
       {"cutcalc_http_connections_total", "Connections accepted.", counters.connections},
-      {"cutcalc_http_engine_requests_total", "Requests handed to the HTTP library.",
+      {"cutcalc_http_engine_requests_total", "Requests framed and handed to the app.",
        counters.requests},
       {"cutcalc_http_framing_rejections_total",
        "Requests the engine answered 400/413 itself (malformed or ambiguous framing, body too "
@@ -88,6 +88,12 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
        counters.rejected_at_cap},
       {"cutcalc_http_epoll_failures_total", "epoll_ctl calls that failed (the connection closed).",
        counters.epoll_failures},
+      {"cutcalc_calculation_pool_jobs_total",
+       "Heavy calculations (programs) started on the calculation pool.",
+       counters.calculations.jobs},
+      {"cutcalc_calculation_pool_refused_total",
+       "Heavy calculations answered 503 with Retry-After because the pool's queue was full.",
+       counters.calculations.refused},
   };
   std::ostringstream out;
   for (const Counter& counter : all) {
@@ -95,6 +101,20 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
         << " counter\n"
         << counter.name << ' ' << counter.value.load(std::memory_order_relaxed) << '\n';
   }
+  out << "# HELP cutcalc_calculation_pool_wait_seconds_total Time heavy calculations waited in "
+         "the pool's queue, summed (divide by the jobs for the mean wait).\n"
+         "# TYPE cutcalc_calculation_pool_wait_seconds_total counter\n"
+         "cutcalc_calculation_pool_wait_seconds_total "
+      << static_cast<double>(counters.calculations.wait_microseconds.load()) / 1e6 << '\n';
+  out << "# HELP cutcalc_calculation_pool_queue_depth Heavy calculations waiting for a thread "
+         "now.\n"
+         "# TYPE cutcalc_calculation_pool_queue_depth gauge\n"
+         "cutcalc_calculation_pool_queue_depth "
+      << counters.calculations.queued.load() << '\n';
+  out << "# HELP cutcalc_calculation_pool_running Heavy calculations running now.\n"
+         "# TYPE cutcalc_calculation_pool_running gauge\n"
+         "cutcalc_calculation_pool_running "
+      << counters.calculations.running.load() << '\n';
   out << "# HELP cutcalc_http_open_connections Connections open now.\n"
          "# TYPE cutcalc_http_open_connections gauge\n"
          "cutcalc_http_open_connections "

@@ -1,22 +1,32 @@
 #pragma once
-// Every path the service answers and the methods it accepts there, for 404/405, OPTIONS, CORS
-// preflights and metric labels.
+// Every path the service answers, the methods it accepts there and what answers it: the one table
+// the app routes by (GET and POST alike), and the source of 404/405, OPTIONS, CORS preflights and
+// metric labels.
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "api/json_endpoint.h"
+#include "service/http_request.h"
+#include "service/http_response.h"
 
 namespace cutcalc::service {
 
 // The method a path's handler takes.
 enum class RouteMethod { get, post };
 
+// A GET route's answer (also HEAD's: the engine drops the body). Fills in `res`, which already
+// carries the headers every response has.
+using GetHandler = std::function<void(const HttpRequest& req, HttpResponse& res)>;
+
 struct RouteEntry {
   std::string path;
   std::string allow;  // the Allow header value: "GET, HEAD, OPTIONS" or "POST, OPTIONS"
-  api::JsonHandler calculation = nullptr;  // a POST calculation's handler, answered at routing
+  GetHandler get;     // a GET route's handler
+  api::JsonHandler calculation = nullptr;  // a POST calculation's handler
+  bool heavy = false;  // the calculation runs on the calculation pool, off the event loops
 };
 
 class RouteTable {
@@ -24,13 +34,14 @@ class RouteTable {
   // The one place that says which methods a path answers (405's and OPTIONS' Allow, a preflight's
   // Access-Control-Allow-Methods): its handler's method, HEAD with GET (the library answers HEAD
   // from the GET handler, without the body) and OPTIONS everywhere (answered before routing).
-  void add(std::string path, RouteMethod method) {
-    routes_.push_back(
-        {std::move(path), method == RouteMethod::get ? "GET, HEAD, OPTIONS" : "POST, OPTIONS"});
+  void add_get(std::string path, GetHandler handler) {
+    routes_.push_back({std::move(path), allow_of(RouteMethod::get), std::move(handler)});
   }
-  void add_calculation(std::string path, api::JsonHandler handler) {
-    add(std::move(path), RouteMethod::post);
-    routes_.back().calculation = handler;
+  void add_calculation(std::string path, api::JsonHandler handler, bool heavy) {
+    routes_.push_back({std::move(path), allow_of(RouteMethod::post), {}, handler, heavy});
+  }
+  [[nodiscard]] static std::string allow_of(RouteMethod method) {
+    return method == RouteMethod::get ? "GET, HEAD, OPTIONS" : "POST, OPTIONS";
   }
   [[nodiscard]] const std::vector<RouteEntry>& entries() const { return routes_; }
   // The entry for an exact path, or nullptr.

@@ -7,8 +7,6 @@
 #include <span>
 #include <string_view>
 
-#include <httplib.h>
-
 #include "service/route_table.h"
 
 namespace cutcalc::service {
@@ -32,8 +30,7 @@ inline constexpr const char* kWebContentSecurityPolicy =
     "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
     "connect-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'";
 
-// Registers GET (and so HEAD) for every asset in `routes` (404/405 and metric labels come from
-// the table, never from the request) and on `server`.
-void install_web_routes(httplib::Server& server, RouteTable& routes);
+// Registers GET (and so HEAD) for every asset in `routes`.
+void install_web_routes(RouteTable& routes);
 
 }  // namespace cutcalc::service

@@ -1,10 +1,10 @@
-// Bare cpp-httplib JSON echo: POST <any path> answers 200 with the request body as
-// application/json. Same library, same compile flags and, by default, the same HTTP tuning as
-// cutcalc, so the benchmark can tell the cost of cutcalc's own work from the cost of the HTTP
-// layer. Other modes exist to measure what the tuning does:
-//   --mode tuned    TunedServer + apply_http_tuning + bind_with_backlog (as cutcalc; default)
-//   --mode setters  httplib::Server + apply_http_tuning + bind_with_backlog (the library's own
-//                   connection loop and fixed thread pool, with cutcalc's runtime settings)
+// Bare JSON echo: POST <any path> answers 200 with the request body as application/json. By
+// default cutcalc's own HTTP engine, listener and tuning with an echo in place of the app, so the
+// benchmark can tell the cost of cutcalc's own work from the cost of the HTTP layer. Other modes
+// run cpp-httplib's server, to measure what the engine does:
+//   --mode tuned    cutcalc's Listener + EventLoopEngine (as cutcalc; default)
+//   --mode setters  httplib::Server with cutcalc's runtime settings through its setters (the
+//                   library's own connection loop and fixed thread pool)
 //   --mode untuned  httplib::Server with the library's compiled-in defaults (only an explicit
 //                   --nodelay is applied, to isolate its effect)
 // usage: httplib_echo [--host H] [--port P] [--threads N] [--backlog N] [--nodelay 0|1]
@@ -27,6 +27,7 @@
 #include <httplib.h>
 
 #include "service/http_tuning.h"
+#include "service/listener.h"
 
 namespace {
 
@@ -81,6 +82,45 @@ bool parse(int argc, char** argv, Options& options) {
   return true;
 }
 
+int serve_with_engine(const Options& options, sigset_t stop_signals) {
+  using namespace cutcalc::service;
+  Listener listener;
+  const int port = listener.open(
+      {options.host, options.port, options.tuning.listen_backlog, options.tuning.reuse_port});
+  if (port < 0) {
+    std::fprintf(stderr, "httplib_echo: cannot bind %s:%d: %s\n", options.host.c_str(),
+                 options.port, listener.error().c_str());
+    return 1;
+  }
+  ConnectionCounters counters;
+  EventLoopEngine engine(
+      event_loop_settings(options.tuning),
+      [](const HttpRequest& request) -> Reply {
+        HttpResponse response;
+        response.set_content(std::string(request.body), "application/json");
+        return response;
+      },
+      [](const EngineError& error) {
+        HttpResponse response;
+        response.status = error.status;
+        response.set_content(std::string(error.detail), "text/plain");
+        return closing_response(response);
+      },
+      [&listener] { return listener.stopped(); }, counters);
+  std::thread stopper([&listener, stop_signals] {
+    int signal_number = 0;
+    sigwait(&stop_signals, &signal_number);
+    listener.stop();
+  });
+  std::printf("listening on %s:%d (mode tuned)\n", options.host.c_str(), port);
+  std::fflush(stdout);
+  const bool ok = listener.run([&engine](int sock) { engine.adopt(sock); });
+  if (!listener.stopped()) kill(getpid(), SIGTERM);  // the listener failed: free the stopper
+  stopper.join();
+  engine.drain(std::chrono::milliseconds(1000));
+  return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,30 +139,23 @@ int main(int argc, char** argv) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
-  std::unique_ptr<httplib::Server> server;
-  if (options.mode == "tuned") {
-    server = std::make_unique<cutcalc::service::TunedServer>(
-        options.tuning, [](const cutcalc::service::EngineError& error) {
-          return cutcalc::service::closing_response(error.status, "text/plain", error.detail);
-        });
-  } else {
-    server = std::make_unique<httplib::Server>();
-  }
-  server->Post(".*", [](const httplib::Request& request, httplib::Response& response) {
+  if (options.mode == "tuned") return serve_with_engine(options, stop_signals);
+
+  httplib::Server server;
+  server.Post(".*", [](const httplib::Request& request, httplib::Response& response) {
     response.set_content(request.body, "application/json");
   });
-
-  int port = -1;
-  if (options.mode == "untuned") {
-    if (options.nodelay_given) server->set_tcp_nodelay(options.tuning.tcp_nodelay);
-    port = options.port == 0
-               ? server->bind_to_any_port(options.host)
-               : (server->bind_to_port(options.host, options.port) ? options.port : -1);
-  } else {
-    if (options.mode == "setters") cutcalc::service::apply_http_tuning(*server, options.tuning);
-    port = cutcalc::service::bind_with_backlog(*server, options.host.c_str(), options.port,
-                                               options.tuning.listen_backlog);
+  if (options.mode == "setters") {
+    server.set_keep_alive_max_count(options.tuning.keep_alive_max_requests);
+    server.set_keep_alive_timeout(options.tuning.limits.keep_alive_timeout.count());
+    server.set_payload_max_length(options.tuning.limits.max_body_bytes);
+    server.set_tcp_nodelay(options.tuning.tcp_nodelay);
+  } else if (options.nodelay_given) {
+    server.set_tcp_nodelay(options.tuning.tcp_nodelay);
   }
+  const int port = options.port == 0
+                       ? server.bind_to_any_port(options.host)
+                       : (server.bind_to_port(options.host, options.port) ? options.port : -1);
   if (port < 0) {
     std::fprintf(stderr, "httplib_echo: cannot bind %s:%d\n", options.host.c_str(), options.port);
     return 1;
@@ -132,12 +165,12 @@ int main(int argc, char** argv) {
   std::thread stopper([&server, &finished, stop_signals] {
     int signal_number = 0;
     sigwait(&stop_signals, &signal_number);
-    if (!finished) server->stop();
+    if (!finished) server.stop();
   });
 
   std::printf("listening on %s:%d (mode %s)\n", options.host.c_str(), port, options.mode.c_str());
   std::fflush(stdout);
-  const bool ok = server->listen_after_bind();
+  const bool ok = server.listen_after_bind();
   // If the listener ended on its own, wake the stopper so it can be joined (a signal sent
   // while every thread blocks it stays pending and does no harm).
   finished = true;

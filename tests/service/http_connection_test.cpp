@@ -1,4 +1,4 @@
-// ConnectionStream: what the HTTP library reads a framed request from and writes into; UniqueFd.
+// SocketAddresses and UniqueFd: what the engine keeps per connection.
 
 #include "service/http_connection.h"
 
@@ -18,65 +18,12 @@
 namespace cutcalc::service {
 namespace {
 
-TEST(ConnectionStream, ReadsTheRequestThenReportsItsEnd) {
-  const SocketAddresses addresses(-1);
-  std::string output;
-  ConnectionStream stream("GET / HTTP/1.1\r\n\r\n", output, addresses);
-  char buffer[8];
-  EXPECT_TRUE(stream.is_readable());
-  EXPECT_EQ(stream.read(buffer, sizeof buffer), 8);
-  EXPECT_EQ(std::string(buffer, 8), "GET / HT");
-  EXPECT_EQ(stream.read(buffer, sizeof buffer), 8);
-  EXPECT_EQ(stream.read(buffer, sizeof buffer), 2);
-  EXPECT_FALSE(stream.is_readable());
-  // Past the request: the end of the stream, never a wait for the socket.
-  EXPECT_EQ(stream.read(buffer, sizeof buffer), 0);
-}
-
-TEST(FramedRequestBody, IsTheThreadsBodyWhileItLivesAndRestoresTheOneBefore) {
-  EXPECT_TRUE(framed_request_body().empty());
-  {
-    const FramedRequestBody outer("{\"a\": 1}");
-    EXPECT_EQ(framed_request_body(), "{\"a\": 1}");
-    {
-      const FramedRequestBody inner("[]");
-      EXPECT_EQ(framed_request_body(), "[]");
-    }
-    EXPECT_EQ(framed_request_body(), "{\"a\": 1}");
-    std::string_view seen_elsewhere = "unset";
-    std::thread([&seen_elsewhere] { seen_elsewhere = framed_request_body(); }).join();
-    EXPECT_TRUE(seen_elsewhere.empty());  // one thread's request is not another's
-  }
-  EXPECT_TRUE(framed_request_body().empty());
-}
-
-TEST(ConnectionStream, GathersWritesIntoTheConnectionsOutput) {
-  const SocketAddresses addresses(-1);
-  std::string output = "HTTP/1.1 100 Continue\r\n\r\n";
-  ConnectionStream stream("", output, addresses);
-  EXPECT_EQ(stream.write("HTTP/1.1 200 OK\r\n", 17), 17);
-  EXPECT_EQ(stream.write("\r\n", 2), 2);
-  EXPECT_EQ(output, "HTTP/1.1 100 Continue\r\n\r\nHTTP/1.1 200 OK\r\n\r\n");
-}
-
-TEST(ConnectionStream, ShowsNoSocketSoTheLibraryNeverRefusesAHighDescriptor) {
-  const SocketAddresses addresses(5000);
-  std::string output;
-  const ConnectionStream stream("", output, addresses);
-  EXPECT_EQ(stream.socket(), INVALID_SOCKET);
-}
-
-TEST(ConnectionStream, AddressesOfANonIpSocketAreEmpty) {
+TEST(SocketAddresses, OfANonIpSocketAreEmpty) {
   int pair[2];
   ASSERT_EQ(::socketpair(AF_UNIX, SOCK_STREAM, 0, pair), 0);
   const SocketAddresses addresses(pair[0]);
-  std::string output;
-  const ConnectionStream stream("", output, addresses);
-  std::string ip = "unset";
-  int port = -1;
-  stream.get_remote_ip_and_port(ip, port);
-  EXPECT_EQ(ip, "");
-  EXPECT_EQ(port, 0);
+  EXPECT_EQ(addresses.peer().ip, "");
+  EXPECT_EQ(addresses.peer().port, 0);
   ::close(pair[0]);
   ::close(pair[1]);
 }

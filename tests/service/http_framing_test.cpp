@@ -1,5 +1,5 @@
-// classify_request() and library_request(): where a request ends (RFC 9112 sections 2-7), and
-// the bytes the HTTP library is given for it.
+// classify_request() and framed_request(): where a request ends (RFC 9112 sections 2-7), and the
+// request read in the same pass.
 
 #include "service/http_framing.h"
 
@@ -7,6 +7,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace cutcalc::service {
 namespace {
@@ -185,32 +186,76 @@ TEST(ClassifyRequest, ExpectContinueIsNotedForHttp11Only) {
                    .expects_continue);
 }
 
-TEST(LibraryRequest, PlainRequestIsPassedAsItCame) {
-  const std::string input = "\r\nPOST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 2\r\n\r\n{}NEXT";
-  const RequestFrame result = frame(input);
-  std::string scratch;
-  const std::string_view bytes = library_request(input, result, scratch);
-  EXPECT_EQ(bytes, input.substr(2, input.size() - 6));
-  EXPECT_TRUE(scratch.empty());
+// The request of a complete frame, from the same pass over the bytes.
+struct Framed {
+  RequestFrame frame;
+  std::vector<HeaderField> fields;
+  std::string decoded;
+  std::string path_scratch;
+  HttpRequest request;
+};
+
+Framed framed(std::string_view input) {
+  Framed out;
+  out.frame = classify_request(input, kLimits, &out.fields, &out.decoded);
+  if (out.frame.verdict == Verdict::complete) {
+    out.request = framed_request(input, out.frame, out.fields, out.decoded, out.path_scratch);
+  }
+  return out;
 }
 
-TEST(LibraryRequest, ChunkedBodyIsDecodedUnderAContentLength) {
+TEST(FramedRequest, ContentLengthBodyIsAViewOfTheInputUpToItsEnd) {
+  const std::string input =
+      "\r\nPOST /x?q=1 HTTP/1.1\r\nHost: a\r\nContent-Length: 2\r\n\r\n{}NEXT";
+  const Framed result = framed(input);
+  ASSERT_EQ(result.frame.verdict, Verdict::complete);
+  EXPECT_EQ(result.request.method, "POST");
+  EXPECT_EQ(result.request.target, "/x?q=1");
+  EXPECT_EQ(result.request.path, "/x");
+  EXPECT_TRUE(result.request.http11);
+  EXPECT_EQ(result.request.body, "{}");
+  EXPECT_GE(result.request.body.data(), input.data());  // no copy
+  EXPECT_LT(result.request.body.data(), input.data() + input.size());
+  ASSERT_EQ(result.fields.size(), 2U);
+  EXPECT_EQ(result.request.header("content-length"), "2");
+  EXPECT_EQ(result.request.header("HOST"), "a");
+  EXPECT_EQ(result.request.header("Accept"), "");
+}
+
+TEST(FramedRequest, ChunkedBodyIsDecodedInTheFramingPass) {
   const std::string input =
       "POST /x HTTP/1.1\r\nHost: a\r\nTransfer-Encoding: chunked\r\nExpect: 100-continue\r\n"
       "Accept: */*\r\n\r\n2;e=1\r\n{\"\r\n3\r\na\":\r\n2\r\n1}\r\n0\r\nT: 1\r\n\r\nNEXT";
-  const RequestFrame result = frame(input);
-  ASSERT_EQ(result.verdict, Verdict::complete);
-  std::string scratch;
-  EXPECT_EQ(library_request(input, result, scratch),
-            "POST /x HTTP/1.1\r\nHost: a\r\nAccept: */*\r\nContent-Length: 7\r\n\r\n{\"a\":1}");
+  const Framed result = framed(input);
+  ASSERT_EQ(result.frame.verdict, Verdict::complete);
+  EXPECT_EQ(result.request.body, "{\"a\":1}");
+  EXPECT_EQ(result.request.header("accept"), "*/*");
+  EXPECT_EQ(result.request.header("T"), "");  // trailer fields are not request fields
 }
 
-TEST(LibraryRequest, ExpectIsRemovedSoThatTheLibraryDoesNotAnswerItAgain) {
-  const std::string input =
-      "POST /x HTTP/1.1\r\nExpect: 100-continue\r\nHost: a\r\nContent-Length: 2\r\n\r\n{}";
-  std::string scratch;
-  EXPECT_EQ(library_request(input, frame(input), scratch),
-            "POST /x HTTP/1.1\r\nHost: a\r\nContent-Length: 2\r\n\r\n{}");
+TEST(FramedRequest, PathIsPercentDecodedAndAbsoluteFormGivesItsPath) {
+  EXPECT_EQ(framed("GET /health%7A HTTP/1.1\r\nHost: a\r\n\r\n").request.path, "/healthz");
+  EXPECT_EQ(framed("GET /a+b%20c HTTP/1.1\r\nHost: a\r\n\r\n").request.path, "/a+b c");
+  EXPECT_EQ(framed("GET http://cutcalc:8080/healthz?x HTTP/1.1\r\nHost: a\r\n\r\n").request.path,
+            "/healthz");
+  EXPECT_EQ(framed("GET http://cutcalc HTTP/1.1\r\nHost: a\r\n\r\n").request.path, "/");
+}
+
+TEST(FramedRequest, KeepAliveFollowsVersionAndConnectionTokens) {
+  EXPECT_TRUE(framed("GET / HTTP/1.1\r\nHost: a\r\n\r\n").request.wants_keep_alive());
+  EXPECT_FALSE(framed("GET / HTTP/1.1\r\nHost: a\r\nConnection: foo, Close\r\n\r\n")
+                   .request.wants_keep_alive());
+  EXPECT_FALSE(framed("GET / HTTP/1.0\r\n\r\n").request.wants_keep_alive());
+  EXPECT_TRUE(
+      framed("GET / HTTP/1.0\r\nConnection: keep-alive\r\n\r\n").request.wants_keep_alive());
+}
+
+TEST(FramedRequest, FieldsOfAnIncompleteRequestAreNotKeptFromAnEarlierCall) {
+  std::vector<HeaderField> fields{{"stale", "x"}};
+  std::string decoded = "stale";
+  classify_request("GET / HTTP/1.1\r\nHo", kLimits, &fields, &decoded);
+  EXPECT_TRUE(fields.empty());
+  EXPECT_TRUE(decoded.empty());
 }
 
 }  // namespace

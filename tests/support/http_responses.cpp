@@ -81,6 +81,11 @@ ParsedResponses parse_responses(std::string_view bytes) {
       continue;
     }
     if (response.count("transfer-encoding") != 0) return fail("Transfer-Encoding in a response");
+    if (response.status == 204) {  // no content, and no Content-Length (RFC 9110 8.6)
+      if (response.count("content-length") != 0) return fail("Content-Length in a 204");
+      parsed.responses.push_back(std::move(response));
+      continue;
+    }
     if (response.count("content-length") != 1 || !all_digits(response.header("content-length"))) {
       return fail("not exactly one numeric Content-Length");
     }

@@ -1,0 +1,42 @@
+#pragma once
+// One HTTP request as the engine framed it (service/http_framing.h): parsed once, handed to the
+// app as a value. Every view points into the connection's buffers and is valid only during the
+// call that receives the request; work that outlives it copies what it needs.
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cutcalc::service {
+
+class SocketAddresses;
+
+struct HeaderField {
+  std::string_view name;   // as sent (compare case-insensitively)
+  std::string_view value;  // without surrounding whitespace
+};
+
+struct HttpRequest {
+  std::string_view method;
+  std::string_view target;  // as sent
+  std::string_view path;    // the target's path, percent-decoded (request_path())
+  bool http11 = true;       // false: HTTP/1.0
+  std::span<const HeaderField> fields;
+  std::string_view body;                       // the content (a chunked body decoded)
+  const SocketAddresses* addresses = nullptr;  // of the connection; null in unit tests
+
+  // The value of the first field named `name` (case-insensitive), or empty.
+  [[nodiscard]] std::string_view header(std::string_view name) const;
+  // Whether the client asked to keep the connection open after this request (RFC 9112 9.3).
+  [[nodiscard]] bool wants_keep_alive() const;
+  // The peer's IP, or "" when unknown.
+  [[nodiscard]] std::string_view remote_ip() const;
+};
+
+// The path of `target` (up to '?'), percent-decoded when it holds a '%' (into `scratch`).
+// An absolute-form target ("http://host/path") gives its path; "*" gives "*".
+std::string_view request_path(std::string_view target, std::string& scratch);
+
+}  // namespace cutcalc::service
