@@ -2,7 +2,7 @@
 // modules). A line-by-line port of bench/peers/node_peer.js, so that Go does the same work as
 // Node and cutcalc for two endpoints:
 //
-//	POST /v1/roughness/groove-wall   R2-R5 of spec roughness.md
+//	POST /v1/roughness/groove-wall   R2-R5 and Ra (R9-R12) of spec roughness.md
 //	POST /v1/entry-length            E1, E2, E14 of spec entry-and-main-time.md, straight entry
 //	                                 edge only, no exit
 //
@@ -11,7 +11,8 @@
 // Object.keys gives them), the formula, and the answer with cutcalc's fields in cutcalc's order,
 // numbers printed as JavaScript prints them and integral doubles as 12.0 like cutcalc. Not
 // modelled (as in the Node peer): duplicate keys (the last one wins; cutcalc: 400), target_rz_um
-// (rejected as unknown), the other contours, exit, length_mm. Parse error messages are Go's.
+// and bearing_points (rejected as unknown), the other contours, exit, length_mm. Parse error
+// messages are Go's.
 // Any other POST path: answers 200 with the request body as application/json (a bare echo).
 // Same keep-alive policy as the Node peer: 5 s idle timeout, at most 10 000 requests a connection.
 // The benchmark runs it with GOMAXPROCS=1 under taskset on the server CPU.
@@ -301,36 +302,123 @@ func contains(list []string, s string) bool {
 
 func positive(v float64) bool { return v > 0 }
 
-// --- POST /v1/roughness/groove-wall (R2-R5) ------------------------------------------------------
+// --- POST /v1/roughness/groove-wall (R2-R5; Ra by R9-R12) ---------------------------------------
 
 // sqrtProduct is sqrt(a) sqrt(b) rather than sqrt(a b): the product could overflow for huge lengths.
 func sqrtProduct(a, b float64) float64 {
 	return math.Sqrt(math.Max(a, 0)) * math.Sqrt(math.Max(b, 0))
 }
 
-func grooveWall(S, rho, phi1Deg float64) (rzMm float64, branch string) {
-	phi1 := phi1Deg * radPerDeg
-	if phi1 == 0 { // R4 with phi1 = 0: the minor edge is the wall itself
-		return 0, "nose_arc_and_minor_edge"
-	}
+// edgeAngle: sin, cos, tan of phi1 and 2 sin^2(phi1/2) (1 - cos(phi1) without cancellation).
+type edgeAngle struct{ sin, cos, tan, twoSinSqHalf float64 }
+
+func newEdgeAngle(phi1 float64) edgeAngle {
 	sinHalf := math.Sin(0.5 * phi1)
-	sin := math.Sin(phi1)
-	cos := math.Cos(phi1)
-	tan := math.Tan(phi1)
-	twoSinSqHalf := 2 * sinHalf * sinHalf // 1 - cos(phi1) without cancellation
-	SAB := 2 * rho * sin                  // R2
-	SBC := rho + rho/sin
+	return edgeAngle{math.Sin(phi1), math.Cos(phi1), math.Tan(phi1), 2 * sinHalf * sinHalf}
+}
+
+// noseArcAbscissa: where a nose arc reaches height y <= rho, u = sqrt(y (2 rho - y)).
+func noseArcAbscissa(y, rho float64) float64 {
+	return math.Sqrt(math.Max(y, 0)) * math.Sqrt(math.Max(2*rho-y, 0))
+}
+
+// profile is one pitch (phi1 > 0): the crest Rz, its branch, where the left side ends (uC) and its
+// height there (yLeftEnd: Rz, or rho where the profile jumps to Rz).
+type profile struct {
+	S, rho       float64
+	a            edgeAngle
+	Rz           float64
+	branch       string
+	uC, yLeftEnd float64
+}
+
+// pitchProfile is R2-R5 and R9.
+func pitchProfile(S, rho float64, a edgeAngle) profile {
+	SAB := 2 * rho * a.sin // R2
+	SBC := rho + rho/a.sin
 	if S <= SAB { // R3
 		h := 0.5 * S
-		return h * (h / (rho + sqrtProduct(rho-h, rho+h))), "nose_arc"
+		Rz := h * (h / (rho + sqrtProduct(rho-h, rho+h)))
+		return profile{S, rho, a, Rz, "nose_arc", S / 2, Rz}
 	}
 	if S <= SBC { // R4, the bracket multiplied by its conjugate
-		Ssin := S * sin
+		Ssin := S * a.sin
 		root := sqrtProduct(Ssin, 2*rho-Ssin)
-		bracket := S * ((S - SAB) / (S*cos + root))
-		return rho*twoSinSqHalf + sin*bracket, "nose_arc_and_minor_edge"
+		bracket := S * ((S - SAB) / (S*a.cos + root))
+		Rz := rho*a.twoSinSqHalf + a.sin*bracket
+		return profile{S, rho, a, Rz, "nose_arc_and_minor_edge", math.Min(noseArcAbscissa(Rz, rho), rho), Rz}
 	}
-	return rho + (S-SBC)*tan, "minor_edge_and_main_edge" // R5
+	Rz := rho + (S-SBC)*a.tan // R5
+	return profile{S, rho, a, Rz, "minor_edge_and_main_edge", rho, rho}
+}
+
+// thetaMinusSine is th - sin(th): its series below 0.1 rad, where the difference would lose its
+// digits (R11).
+func thetaMinusSine(th float64) float64 {
+	if th < 0.1 {
+		th2 := th * th
+		return th * th2 * (1.0/6 - th2*(1.0/120-th2*(1.0/5040-th2/362880)))
+	}
+	return th - math.Sin(th)
+}
+
+// noseArcArea is R11: the area under a nose arc over [0, x].
+func noseArcArea(x, rho float64) float64 {
+	th := math.Asin(math.Min(math.Max(x/rho, 0), 1))
+	sinHalf := math.Sin(th / 2)
+	return rho * rho * (math.Sin(th)*sinHalf*sinHalf - thetaMinusSine(th)/2)
+}
+
+// minorEdgeOffset: the minor edge is y = v tan(phi1) - minorEdgeOffset (R9).
+func (p profile) minorEdgeOffset() float64 {
+	return p.rho * p.a.twoSinSqHalf / p.a.cos
+}
+
+// rightSideArea is R11's I_R(v): the area under the right side (trailing arc, then the minor edge).
+func (p profile) rightSideArea(v float64) float64 {
+	vA := p.rho * p.a.sin
+	if v <= vA {
+		return noseArcArea(v, p.rho)
+	}
+	return noseArcArea(vA, p.rho) + p.a.tan*(v-vA)*(v+vA)/2 - p.minorEdgeOffset()*(v-vA)
+}
+
+// rightSideAbscissa: where the right side reaches height y; the arc below y_a = 2 rho
+// sin^2(phi1/2), the edge above.
+func (p profile) rightSideAbscissa(y float64) float64 {
+	yA := p.rho * p.a.twoSinSqHalf
+	v := (y + p.minorEdgeOffset()) / p.a.tan
+	if y <= yA {
+		v = noseArcAbscissa(y, p.rho)
+	}
+	return math.Min(v, p.S-p.uC)
+}
+
+// arithmeticMeanDeviation is R10 and R12: Ra in mm, twice the area between the mean line and the
+// profile below it, on the profile scaled by a power of two near max(S, rho) (exact) so that no
+// area overflows.
+func arithmeticMeanDeviation(S, rho float64, a edgeAngle) float64 {
+	_, exp := math.Frexp(math.Max(S, rho)) // max = m 2^exp, m in [0.5, 1): C's ilogb is exp - 1
+	scale := math.Ldexp(1, exp-1)
+	p := pitchProfile(S/scale, rho/scale, a)
+	ybar := (noseArcArea(p.uC, p.rho) + p.rightSideArea(p.S-p.uC)) / p.S // R10
+	uL := p.uC
+	if ybar < p.yLeftEnd {
+		uL = math.Min(noseArcAbscissa(ybar, p.rho), p.uC)
+	}
+	vR := p.rightSideAbscissa(ybar)
+	below := ybar*(uL+vR) - noseArcArea(uL, p.rho) - p.rightSideArea(vR)
+	return math.Max(2*below/p.S, 0) * scale
+}
+
+func grooveWall(S, rho, phi1Deg float64) (rzMm, raMm float64, branch string) {
+	phi1 := phi1Deg * radPerDeg
+	if phi1 == 0 { // R4 with phi1 = 0: the minor edge is the wall itself; the profile is flat
+		return 0, 0, "nose_arc_and_minor_edge"
+	}
+	a := newEdgeAngle(phi1)
+	p := pitchProfile(S, rho, a)
+	return p.Rz, arithmeticMeanDeviation(S, rho, a), p.branch
 }
 
 func handleGrooveWall(w http.ResponseWriter, b *body) {
@@ -347,14 +435,14 @@ func handleGrooveWall(w http.ResponseWriter, b *body) {
 		invalid(w, errs)
 		return
 	}
-	rzMm, branch := grooveWall(S, rho, phi1)
-	rz := rzMm * umPerMm
-	if math.IsInf(rz, 0) || math.IsNaN(rz) {
+	rzMm, raMm, branch := grooveWall(S, rho, phi1)
+	rz, ra := rzMm*umPerMm, raMm*umPerMm
+	if math.IsInf(rz, 0) || math.IsNaN(rz) || math.IsInf(ra, 0) || math.IsNaN(ra) {
 		detail := "the crest height exceeds the range of a double"
 		problem(w, 422, "Input impossible for the model", detail, []fieldError{{"", detail}})
 		return
 	}
-	send(w, 200, "application/json", `{"branch":"`+branch+`","rz_um":`+num(rz)+`}`)
+	send(w, 200, "application/json", `{"branch":"`+branch+`","ra_um":`+num(ra)+`,"rz_um":`+num(rz)+`}`)
 }
 
 // --- POST /v1/entry-length, straight entry edge (E1, E2, E14) ------------------------------------
