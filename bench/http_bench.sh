@@ -4,15 +4,20 @@
 #   echo     bench/peers/httplib_echo (the engine's bare echo: cutcalc's HTTP engine and tuning)
 #   nginx    bench/peers/nginx.conf.template (cutcalc's answer as a fixed JSON)
 #   node     bench/peers/node_peer.js (Node.js http, one process, computes the same answers)
+#   go       bench/peers/go_peer/ (Go net/http and encoding/json, the standard library only; a port
+#            of node_peer.js computing the same answers; built here by Debian's golang-go with
+#            GOPROXY=off, GOTOOLCHAIN=local and GOCACHE/GOPATH under build/go_peer/; GOMAXPROCS=1
+#            pinned, the CPU count with --no-pin)
 #   fastapi  bench/peers/fastapi_peer.py (FastAPI/uvicorn, one worker, computes the same answers;
 #            Debian's python3-fastapi and python3-uvicorn, run with /usr/bin/python3)
 # Scenarios, stated once here (path and body) and handed to bench/wrk_post.lua:
 #   groove-wall   POST /v1/roughness/groove-wall at --conns connections (default 8 64 256)
 #   entry-length  POST /v1/entry-length at --entry-conns connections (default 64)
 # Pinning (default): every server under taskset -c <server CPU> (cutcalc and the echo with
-# --threads 1, nginx worker_processes 1, one Node process, one uvicorn worker), wrk -t1 under
-# taskset -c <client CPU>. Before timing, every target's answer to every body must be 200, and
-# cutcalc's, nginx's, node's and fastapi's answers must agree numerically (1e-12 relative).
+# --threads 1, nginx worker_processes 1, one Node process, Go with GOMAXPROCS=1, one uvicorn
+# worker), wrk -t1 under taskset -c <client CPU>. Before timing, every target's answer to every
+# body must be 200, and cutcalc's, nginx's, node's, go's and fastapi's answers must agree
+# numerically (1e-12 relative).
 # Each round runs every (scenario, connections, target) once, for --duration seconds, with the
 # target order rotated from round to round (after a 1 s warm-up per target per scenario); the
 # tables report medians over the rounds: req/s, p50, p99, the server's CPU microseconds per
@@ -23,17 +28,17 @@
 # in the reference cases; the polygon and program endpoints once as JSON and once with Accept:
 # text/plain; the GET endpoints too, compared with nginx only), at --endpoint-conns connections,
 # each request sent to the peers as well (bench/requests.lua): echo answers the body, nginx its
-# fixed JSON, node and fastapi compute groove-wall and entry-length and echo the rest.
+# fixed JSON, node, go and fastapi compute groove-wall and entry-length and echo the rest.
 #
 # usage: bench/http_bench.sh [--cutcalc PATH] [--echo PATH] [--rounds N] [--duration S]
 #                            [--conns "8 64 256"] [--entry-conns "64"]
 #                            [--server-cpu N] [--client-cpu N] [--no-pin] [--threads N]
-#                            [--fastapi-python PATH] [--strict]
+#                            [--fastapi-python PATH] [--go PATH] [--strict]
 #                            [--endpoints | --endpoints-only] [--endpoint-conns "64"]
 #                            [--reference DIR]
 #   env: CUTCALC_BIN, HTTPLIB_ECHO_BIN, HTTP_BENCH_ROUNDS, HTTP_BENCH_DURATION, HTTP_BENCH_CONNS,
 #        HTTP_BENCH_ENTRY_CONNS, HTTP_BENCH_SERVER_CPU, HTTP_BENCH_CLIENT_CPU, HTTP_BENCH_THREADS,
-#        HTTP_BENCH_ENDPOINT_CONNS, FASTAPI_PYTHON, CUTCALC_REFERENCE_DIR (flags win)
+#        HTTP_BENCH_ENDPOINT_CONNS, FASTAPI_PYTHON, GO, CUTCALC_REFERENCE_DIR (flags win)
 #   --cutcalc     default build/release/service/cutcalc, started as
 #                 cutcalc --host 127.0.0.1 --port P --threads N --log-level warn
 #   --echo        default build/release/bench/peers/httplib_echo
@@ -44,6 +49,7 @@
 #                 nginx's workers default to the CPU count), wrk -t2
 #   --threads     cutcalc's and the echo's --threads, default 1 (pinned) or the CPU count
 #   --fastapi-python  interpreter with fastapi and uvicorn, default /usr/bin/python3
+#   --go          the Go toolchain that builds the Go peer, default go on PATH (Debian: golang-go)
 #   --strict      exit 3 if a goal fails
 #   --endpoints       also the per-endpoint table; --endpoints-only: only that table
 #   --endpoint-conns  connections for the per-endpoint table, default 64
@@ -66,6 +72,7 @@ CLIENT_CPU="${HTTP_BENCH_CLIENT_CPU:-1}"
 THREADS="${HTTP_BENCH_THREADS:-}"
 ENDPOINT_CONNS="${HTTP_BENCH_ENDPOINT_CONNS:-64}"
 FASTAPI_PYTHON="${FASTAPI_PYTHON:-/usr/bin/python3}"
+GO="${GO:-go}"
 REFERENCE="${CUTCALC_REFERENCE_DIR:-$ROOT/../shared/reference}"
 PIN=1
 MAIN_TABLE=1
@@ -75,7 +82,7 @@ STRICT=0
 # The scenarios: name, path, body (wrk_post.lua sends the body; the peers compute the same answer).
 # shellcheck source=bench/scenarios.sh
 source "$ROOT/bench/scenarios.sh"
-TARGETS=(cutcalc echo nginx node fastapi)
+TARGETS=(cutcalc echo nginx node go fastapi)
 
 die() { echo "http_bench: $*" >&2; exit 2; }
 
@@ -92,6 +99,7 @@ while [[ $# -gt 0 ]]; do
     --no-pin) PIN=0; shift ;;
     --threads) THREADS="$2"; shift 2 ;;
     --fastapi-python) FASTAPI_PYTHON="$2"; shift 2 ;;
+    --go) GO="$2"; shift 2 ;;
     --strict) STRICT=1; shift ;;
     --endpoints) ENDPOINT_TABLE=1; shift ;;
     --endpoints-only) ENDPOINT_TABLE=1; MAIN_TABLE=0; shift ;;
@@ -120,6 +128,7 @@ NGINX_BIN="$(command -v nginx || echo /usr/sbin/nginx)"
 [[ -x "$FASTAPI_PYTHON" ]] || die "no interpreter at $FASTAPI_PYTHON (--fastapi-python PATH); Debian: apt-get install python3-fastapi python3-uvicorn"
 "$FASTAPI_PYTHON" -c 'import fastapi, uvicorn, pydantic' 2>/dev/null ||
   die "$FASTAPI_PYTHON cannot import fastapi and uvicorn: apt-get install python3-fastapi python3-uvicorn"
+command -v "$GO" >/dev/null || die "no Go toolchain '$GO' (--go PATH); Debian: apt-get install golang-go"
 
 # The CPUs this process may run on (affinity mask), e.g. "0 1".
 ALLOWED_CPUS="$(python3 -c 'import os; print(" ".join(str(c) for c in sorted(os.sched_getaffinity(0))))')"
@@ -232,6 +241,17 @@ start_target() {  # target command... ; @PORT@ is replaced by PORTS[target], els
   wait_ready "$target"
 }
 
+# --- the Go peer: built offline (the standard library only, no module download) ---------------
+GO_BUILD="$ROOT/build/go_peer"  # the binary, GOCACHE and GOPATH: rebuilt only when main.go changes
+GO_PEER_BIN="$GO_BUILD/go_peer"
+mkdir -p "$GO_BUILD"
+echo "http_bench: building the Go peer with $("$GO" version)" >&2
+(cd "$ROOT/bench/peers/go_peer" &&
+  env GOCACHE="$GO_BUILD/cache" GOPATH="$GO_BUILD/gopath" GOTOOLCHAIN=local GOPROXY=off GOFLAGS= \
+    GOWORK=off GO111MODULE=on GOENV=off CGO_ENABLED=0 \
+    timeout 600 "$GO" build -trimpath -o "$GO_PEER_BIN" .) >"$RESULTS/raw/go_build.log" 2>&1 ||
+  { cat "$RESULTS/raw/go_build.log" >&2; die "building the Go peer failed (bench/peers/go_peer)"; }
+
 # --- servers (taskset execs the server: the pid is the server's) ------------------------------
 start_target cutcalc "$CUTCALC_BIN" --host 127.0.0.1 --port @PORT@ --threads "$THREADS" --log-level warn
 start_target echo "$ECHO_BIN" --host 127.0.0.1 --port @PORT@ --threads "$THREADS"
@@ -241,6 +261,7 @@ sed -e "s|@PORT@|${PORTS[nginx]}|g" -e "s|@RUNDIR@|$RUNDIR/nginx|g" -e "s|@WORKE
   "$ROOT/bench/peers/nginx.conf.template" >"$RUNDIR/nginx/nginx.conf"
 start_target nginx "$NGINX_BIN" -p "$RUNDIR/nginx/" -c "$RUNDIR/nginx/nginx.conf" -e "$RUNDIR/nginx/error.log"
 start_target node node "$ROOT/bench/peers/node_peer.js" @PORT@ 127.0.0.1
+start_target go env GOMAXPROCS="$SERVER_PROCS" "$GO_PEER_BIN" @PORT@ 127.0.0.1
 start_target fastapi "$FASTAPI_PYTHON" "$ROOT/bench/peers/fastapi_peer.py" @PORT@ 127.0.0.1
 
 # The CPUs each server (and its children: nginx's workers) may use, as the kernel sees them.
@@ -413,6 +434,7 @@ fi
   echo "echo: $ECHO_BIN --threads $THREADS (built $(date -u -r "$ECHO_BIN" +%FT%TZ))"
   echo "nginx: $("$NGINX_BIN" -v 2>&1 | sed 's/^nginx version: //'), worker_processes $SERVER_PROCS"
   echo "node: $(node --version), bench/peers/node_peer.js, one process"
+  echo "go: $("$GO" version | sed 's/^go version //'), bench/peers/go_peer, GOMAXPROCS=$SERVER_PROCS"
   echo "fastapi: $("$FASTAPI_PYTHON" - <<'PY'
 import importlib.util, platform, fastapi, pydantic, starlette, uvicorn
 loop = "uvloop" if importlib.util.find_spec("uvloop") else "asyncio"
@@ -607,7 +629,7 @@ for scenario in scenario_paths:
         cut_aggs.append(cc)
         if usable(cc):
             parts = []
-            for t in ("node", "fastapi"):
+            for t in ("go", "node", "fastapi"):
                 if usable(per[t]):
                     parts.append(f"cutcalc/{t} {ratio(cc['rps'], per[t]['rps']):.2f}x req/s "
                                  f"({t} needs {ratio(per[t]['cpu_us'], cc['cpu_us']):.2f}x cutcalc's "
@@ -641,6 +663,12 @@ if main_rows:
              lambda cc, ec: (cc["rps"] >= 0.85 * ec["rps"],
                              f"cutcalc {cc['rps']:,.0f} vs echo {ec['rps']:,.0f} req/s "
                              f"({100.0 * ratio(cc['rps'], ec['rps']):.0f}%)"))
+    for scenario in ("groove-wall", "entry-length"):  # informative: not a verdict of this script
+        cc, gp = table.get((scenario, 64, "cutcalc")), table.get((scenario, 64, "go"))
+        if usable(cc) and usable(gp):
+            goals.append(f"INFO issue 23's target cutcalc >= 1.6x Go net/http on {scenario} at 64 "
+                         f"connections, one core each: {ratio(cc['rps'], gp['rps']):.2f}x req/s, "
+                         f"Go needs {ratio(gp['cpu_us'], cc['cpu_us']):.2f}x cutcalc's CPU per request")
     for c in (8, 64, 256):
         goal("groove-wall", c, "nginx", f"p99 within 2x nginx's on groove-wall at {c} connections",
              lambda cc, ng: (cc["p99"] <= 2.0 * ng["p99"],
@@ -652,8 +680,8 @@ if case_rows:
     conns_list = sorted({r["conns"] for r in case_rows})
     out.append("### Every endpoint (one request each)")
     out.append("")
-    out.append("The peers get the same request: echo answers the body, nginx its fixed JSON, node and "
-               "fastapi compute groove-wall and entry-length (straight entry, no exit: 422 on a case "
+    out.append("The peers get the same request: echo answers the body, nginx its fixed JSON, node, go "
+               "and fastapi compute groove-wall and entry-length (straight entry, no exit: 422 on a case "
                "with an exit) and echo the rest.")
     out.append("")
     out.append("| endpoint | target | conns | req/s median (min-max) | p50 ms | p99 ms | server CPU us/req | non-2xx | socket errors c/r/w/t | runs |")
@@ -672,7 +700,7 @@ if case_rows:
             cc = per["cutcalc"]
             if usable(cc):
                 parts = [f"{100.0 * ratio(cc['rps'], per[t]['rps']):.0f}% of {t}'s req/s{flag(per[t])}"
-                         for t in ("echo", "node", "fastapi") if usable(per[t])]
+                         for t in ("echo", "node", "go", "fastapi") if usable(per[t])]
                 if usable(per["nginx"]):
                     parts.append(f"p99 {ratio(cc['p99'], per['nginx']['p99']):.2f}x nginx's")
                 ratios.append(f"- {case} at {c} conns: cutcalc {cc['rps']:,.0f} req/s, "

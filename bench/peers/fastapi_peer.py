@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """FastAPI/uvicorn peer for bench/http_bench.sh: the same two endpoints as bench/peers/node_peer.js.
 
-  POST /v1/roughness/groove-wall   R2-R5 of spec roughness.md (port of cutcalc's
-                                   domain/roughness/crest_branches.cpp and groove_wall.cpp)
+  POST /v1/roughness/groove-wall   R2-R5 and Ra (R9-R12) of spec roughness.md (port of cutcalc's
+                                   domain/roughness/crest_branches.cpp, pitch_profile.cpp and
+                                   groove_wall.cpp)
   POST /v1/entry-length            E1, E2, E14 of spec entry-and-main-time.md, straight entry edge
                                    only, no exit
 
@@ -62,6 +63,7 @@ class GrooveWallRequest(Strict):
 
 class GrooveWallAnswer(BaseModel):
     branch: str
+    ra_um: float
     rz_um: float
 
 
@@ -100,25 +102,98 @@ def sqrt_product(a, b):
     return math.sqrt(max(a, 0.0)) * math.sqrt(max(b, 0.0))
 
 
+class EdgeAngle:
+    """sin, cos, tan of phi1 and 2 sin^2(phi1/2) (1 - cos(phi1) without cancellation)."""
+
+    def __init__(self, phi1):
+        sin_half = math.sin(0.5 * phi1)
+        self.sin, self.cos, self.tan = math.sin(phi1), math.cos(phi1), math.tan(phi1)
+        self.two_sin_sq_half = 2.0 * sin_half * sin_half
+
+
+def nose_arc_abscissa(y, rho):
+    """Where a nose arc reaches height y <= rho: u = sqrt(y (2 rho - y))."""
+    return math.sqrt(max(y, 0.0)) * math.sqrt(max(2.0 * rho - y, 0.0))
+
+
+class PitchProfile:
+    """R2-R5 and R9 (phi1 > 0): the crest Rz of one pitch, its branch, where the left side ends
+    (u_c) and its height there (y_left_end: Rz, or rho where the profile jumps to Rz)."""
+
+    def __init__(self, S, rho, a):
+        self.S, self.rho, self.a = S, rho, a
+        S_AB = 2.0 * rho * a.sin  # R2
+        S_BC = rho + rho / a.sin
+        if S <= S_AB:  # R3
+            h = 0.5 * S
+            self.Rz = h * (h / (rho + sqrt_product(rho - h, rho + h)))
+            self.branch, self.u_c, self.y_left_end = "nose_arc", S / 2.0, self.Rz
+        elif S <= S_BC:  # R4, the bracket multiplied by its conjugate
+            S_sin = S * a.sin
+            root = sqrt_product(S_sin, 2.0 * rho - S_sin)
+            bracket = S * ((S - S_AB) / (S * a.cos + root))
+            self.Rz = rho * a.two_sin_sq_half + a.sin * bracket
+            self.branch = "nose_arc_and_minor_edge"
+            self.u_c, self.y_left_end = min(nose_arc_abscissa(self.Rz, rho), rho), self.Rz
+        else:  # R5
+            self.Rz = rho + (S - S_BC) * a.tan
+            self.branch, self.u_c, self.y_left_end = "minor_edge_and_main_edge", rho, rho
+
+    def minor_edge_offset(self):
+        """The minor edge is y = v tan(phi1) - minor_edge_offset (R9)."""
+        return self.rho * self.a.two_sin_sq_half / self.a.cos
+
+    def right_side_area(self, v):
+        """R11's I_R(v): the area under the right side (trailing arc, then the minor edge)."""
+        v_a = self.rho * self.a.sin
+        if v <= v_a:
+            return nose_arc_area(v, self.rho)
+        return (nose_arc_area(v_a, self.rho) + self.a.tan * (v - v_a) * (v + v_a) / 2.0
+                - self.minor_edge_offset() * (v - v_a))
+
+    def right_side_abscissa(self, y):
+        """Where the right side reaches height y: the arc below y_a = 2 rho sin^2(phi1/2), the
+        edge above."""
+        y_a = self.rho * self.a.two_sin_sq_half
+        v = nose_arc_abscissa(y, self.rho) if y <= y_a else (y + self.minor_edge_offset()) / self.a.tan
+        return min(v, self.S - self.u_c)
+
+
+def theta_minus_sine(th):
+    """th - sin(th): its series below 0.1 rad, where the difference would lose its digits (R11)."""
+    if th < 0.1:
+        th2 = th * th
+        return th * th2 * (1.0 / 6.0 - th2 * (1.0 / 120.0 - th2 * (1.0 / 5040.0 - th2 / 362880.0)))
+    return th - math.sin(th)
+
+
+def nose_arc_area(x, rho):
+    """R11: the area under a nose arc over [0, x]."""
+    th = math.asin(min(max(x / rho, 0.0), 1.0))
+    sin_half = math.sin(th / 2.0)
+    return rho * rho * (math.sin(th) * sin_half * sin_half - theta_minus_sine(th) / 2.0)
+
+
+def arithmetic_mean_deviation(S, rho, a):
+    """R10, R12: Ra in mm, twice the area between the mean line and the profile below it, on the
+    profile scaled by a power of two near max(S, rho) (exact) so that no area overflows."""
+    scale = math.ldexp(1.0, math.frexp(max(S, rho))[1] - 1)  # 2^ilogb(max(S, rho))
+    p = PitchProfile(S / scale, rho / scale, a)
+    ybar = (nose_arc_area(p.u_c, p.rho) + p.right_side_area(p.S - p.u_c)) / p.S  # R10
+    u_l = min(nose_arc_abscissa(ybar, p.rho), p.u_c) if ybar < p.y_left_end else p.u_c
+    v_r = p.right_side_abscissa(ybar)
+    below = ybar * (u_l + v_r) - nose_arc_area(u_l, p.rho) - p.right_side_area(v_r)
+    return max(2.0 * below / p.S, 0.0) * scale
+
+
 def groove_wall(S, rho, phi1_deg):
-    """R2-R5: (Rz in mm, branch)."""
+    """R2-R5, R9-R12: (Rz in mm, Ra in mm, branch)."""
     phi1 = phi1_deg * RAD_PER_DEG
-    if phi1 == 0.0:  # R4 with phi1 = 0: the minor edge is the wall itself
-        return 0.0, "nose_arc_and_minor_edge"
-    sin_half = math.sin(0.5 * phi1)
-    sin, cos, tan = math.sin(phi1), math.cos(phi1), math.tan(phi1)
-    two_sin_sq_half = 2.0 * sin_half * sin_half  # 1 - cos(phi1) without cancellation
-    S_AB = 2.0 * rho * sin  # R2
-    S_BC = rho + rho / sin
-    if S <= S_AB:  # R3
-        h = 0.5 * S
-        return h * (h / (rho + sqrt_product(rho - h, rho + h))), "nose_arc"
-    if S <= S_BC:  # R4, the bracket multiplied by its conjugate
-        S_sin = S * sin
-        root = sqrt_product(S_sin, 2.0 * rho - S_sin)
-        bracket = S * ((S - S_AB) / (S * cos + root))
-        return rho * two_sin_sq_half + sin * bracket, "nose_arc_and_minor_edge"
-    return rho + (S - S_BC) * tan, "minor_edge_and_main_edge"  # R5
+    if phi1 == 0.0:  # R4 with phi1 = 0: the minor edge is the wall itself; the profile is flat
+        return 0.0, 0.0, "nose_arc_and_minor_edge"
+    a = EdgeAngle(phi1)
+    p = PitchProfile(S, rho, a)
+    return p.Rz, arithmetic_mean_deviation(S, rho, a), p.branch
 
 
 def half_chord(r, u):
@@ -172,12 +247,12 @@ app = FastAPI(openapi_url=None, docs_url=None, redoc_url=None)
 @app.post("/v1/roughness/groove-wall", response_model=GrooveWallAnswer,
           dependencies=[Depends(json_only)])
 async def groove_wall_endpoint(body: GrooveWallRequest):
-    rz_mm, branch = groove_wall(body.feed_mm, body.nose_radius_mm, body.minor_edge_angle_deg)
-    rz_um = rz_mm * UM_PER_MM
-    if not math.isfinite(rz_um):
+    rz_mm, ra_mm, branch = groove_wall(body.feed_mm, body.nose_radius_mm, body.minor_edge_angle_deg)
+    rz_um, ra_um = rz_mm * UM_PER_MM, ra_mm * UM_PER_MM
+    if not (math.isfinite(rz_um) and math.isfinite(ra_um)):
         detail = "the crest height exceeds the range of a double"
         return problem(422, "Input impossible for the model", detail, [{"pointer": "", "detail": detail}])
-    return GrooveWallAnswer(branch=branch, rz_um=rz_um)
+    return GrooveWallAnswer(branch=branch, ra_um=ra_um, rz_um=rz_um)
 
 
 @app.post("/v1/entry-length", response_model=EntryLengthAnswer, dependencies=[Depends(json_only)])

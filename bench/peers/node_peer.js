@@ -1,14 +1,15 @@
 // Node.js peer for bench/http_bench.sh: one process, node:http, no npm dependencies. It does the
 // same kind of work as cutcalc for two endpoints:
-//   POST /v1/roughness/groove-wall   R2-R5 of spec roughness.md (port of cutcalc's
-//                                    domain/roughness/crest_branches.cpp and groove_wall.cpp)
+//   POST /v1/roughness/groove-wall   R2-R5 and Ra (R9-R12) of spec roughness.md (port of
+//                                    cutcalc's domain/roughness/crest_branches.cpp,
+//                                    pitch_profile.cpp and groove_wall.cpp)
 //   POST /v1/entry-length            E1, E2, E14 of spec entry-and-main-time.md, straight entry
 //                                    edge only, no exit
 // i.e. Content-Type check (415), JSON.parse (400), field validation collecting every error (422
 // application/problem+json with JSON pointers; unknown fields rejected), the formula, and the
 // answer with cutcalc's fields in cutcalc's order, integral doubles printed as 12.0 like cutcalc.
-// Not modelled: duplicate keys (cutcalc: 400), target_rz_um (rejected here as unknown), the other
-// contours, exit, length_mm.
+// Not modelled: duplicate keys (cutcalc: 400), target_rz_um and bearing_points (rejected here as
+// unknown), the other contours, exit, length_mm.
 // Any other POST path: answers 200 with the request body as application/json (a bare echo, like
 // bench/peers/httplib_echo.cpp); the per-endpoint table of http_bench.sh relies on that.
 // usage: node node_peer.js PORT [HOST]     prints "listening on HOST:PORT" once bound.
@@ -93,36 +94,112 @@ class Checker {
   }
 }
 
-// --- POST /v1/roughness/groove-wall (R2-R5) ---------------------------------------------------
+// --- POST /v1/roughness/groove-wall (R2-R5; Ra by R9-R12) ------------------------------------
 
 // sqrt(a) sqrt(b) rather than sqrt(a b): the product could overflow for huge lengths.
 function sqrtProduct(a, b) {
   return Math.sqrt(Math.max(a, 0)) * Math.sqrt(Math.max(b, 0));
 }
 
-function grooveWall(S, rho, phi1Deg) {
-  const phi1 = phi1Deg * RAD_PER_DEG;
-  if (phi1 === 0) {  // R4 with phi1 = 0: the minor edge is the wall itself
-    return { rz_mm: 0, branch: 'nose_arc_and_minor_edge' };
-  }
+// sin, cos, tan of phi1 and 2 sin^2(phi1/2) (1 - cos(phi1) without cancellation).
+function edgeAngle(phi1) {
   const sinHalf = Math.sin(0.5 * phi1);
-  const sin = Math.sin(phi1);
-  const cos = Math.cos(phi1);
-  const tan = Math.tan(phi1);
-  const twoSinSqHalf = 2 * sinHalf * sinHalf;  // 1 - cos(phi1) without cancellation
-  const S_AB = 2 * rho * sin;  // R2
-  const S_BC = rho + rho / sin;
+  return {
+    sin: Math.sin(phi1), cos: Math.cos(phi1), tan: Math.tan(phi1), twoSinSqHalf: 2 * sinHalf * sinHalf,
+  };
+}
+
+// Where a nose arc reaches height y <= rho: u = sqrt(y (2 rho - y)).
+function noseArcAbscissa(y, rho) {
+  return Math.sqrt(Math.max(y, 0)) * Math.sqrt(Math.max(2 * rho - y, 0));
+}
+
+// R2-R5 and R9 (phi1 > 0): the crest Rz of one pitch, its branch, where the profile's left side
+// ends (uC) and its height there (yLeftEnd: Rz, or rho where the profile jumps to Rz).
+function pitchProfile(S, rho, a) {
+  const S_AB = 2 * rho * a.sin;  // R2
+  const S_BC = rho + rho / a.sin;
   if (S <= S_AB) {  // R3
     const h = 0.5 * S;
-    return { rz_mm: h * (h / (rho + sqrtProduct(rho - h, rho + h))), branch: 'nose_arc' };
+    const Rz = h * (h / (rho + sqrtProduct(rho - h, rho + h)));
+    return { S, rho, a, Rz, branch: 'nose_arc', uC: S / 2, yLeftEnd: Rz };
   }
   if (S <= S_BC) {  // R4, the bracket multiplied by its conjugate
-    const Ssin = S * sin;
+    const Ssin = S * a.sin;
     const root = sqrtProduct(Ssin, 2 * rho - Ssin);
-    const bracket = S * ((S - S_AB) / (S * cos + root));
-    return { rz_mm: rho * twoSinSqHalf + sin * bracket, branch: 'nose_arc_and_minor_edge' };
+    const bracket = S * ((S - S_AB) / (S * a.cos + root));
+    const Rz = rho * a.twoSinSqHalf + a.sin * bracket;
+    return {
+      S, rho, a, Rz, branch: 'nose_arc_and_minor_edge', uC: Math.min(noseArcAbscissa(Rz, rho), rho), yLeftEnd: Rz,
+    };
   }
-  return { rz_mm: rho + (S - S_BC) * tan, branch: 'minor_edge_and_main_edge' };  // R5
+  const Rz = rho + (S - S_BC) * a.tan;  // R5
+  return { S, rho, a, Rz, branch: 'minor_edge_and_main_edge', uC: rho, yLeftEnd: rho };
+}
+
+// th - sin(th): its series below 0.1 rad, where the difference would lose its digits (R11).
+function thetaMinusSine(th) {
+  if (th < 0.1) {
+    const th2 = th * th;
+    return th * th2 * (1 / 6 - th2 * (1 / 120 - th2 * (1 / 5040 - th2 / 362880)));
+  }
+  return th - Math.sin(th);
+}
+
+// R11: the area under a nose arc over [0, x].
+function noseArcArea(x, rho) {
+  const th = Math.asin(Math.min(Math.max(x / rho, 0), 1));
+  const sinHalf = Math.sin(th / 2);
+  return rho * rho * (Math.sin(th) * sinHalf * sinHalf - thetaMinusSine(th) / 2);
+}
+
+// The minor edge is y = v tan(phi1) - minorEdgeOffset (R9).
+function minorEdgeOffset(p) {
+  return p.rho * p.a.twoSinSqHalf / p.a.cos;
+}
+
+// R11: I_R(v), the area under the right side (trailing arc, then the minor edge).
+function rightSideArea(p, v) {
+  const vA = p.rho * p.a.sin;
+  if (v <= vA) return noseArcArea(v, p.rho);
+  return noseArcArea(vA, p.rho) + p.a.tan * (v - vA) * (v + vA) / 2 - minorEdgeOffset(p) * (v - vA);
+}
+
+// Where the right side reaches height y: the arc below y_a = 2 rho sin^2(phi1/2), the edge above.
+function rightSideAbscissa(p, y) {
+  const yA = p.rho * p.a.twoSinSqHalf;
+  const v = y <= yA ? noseArcAbscissa(y, p.rho) : (y + minorEdgeOffset(p)) / p.a.tan;
+  return Math.min(v, p.S - p.uC);
+}
+
+// The exponent e of a positive finite x: 2^e <= x < 2^(e+1) (C's ilogb).
+function ilogb(x) {
+  let e = Math.floor(Math.log2(x));
+  while (2 ** e > x) e -= 1;
+  while (2 ** (e + 1) <= x) e += 1;
+  return e;
+}
+
+// R10, R12: Ra in mm, twice the area between the mean line and the profile below it, on the
+// profile scaled by a power of two near max(S, rho) (exact) so that no area overflows.
+function arithmeticMeanDeviation(S, rho, a) {
+  const scale = 2 ** ilogb(Math.max(S, rho));
+  const p = pitchProfile(S / scale, rho / scale, a);
+  const ybar = (noseArcArea(p.uC, p.rho) + rightSideArea(p, p.S - p.uC)) / p.S;  // R10
+  const uL = ybar < p.yLeftEnd ? Math.min(noseArcAbscissa(ybar, p.rho), p.uC) : p.uC;
+  const vR = rightSideAbscissa(p, ybar);
+  const below = ybar * (uL + vR) - noseArcArea(uL, p.rho) - rightSideArea(p, vR);
+  return Math.max(2 * below / p.S, 0) * scale;
+}
+
+function grooveWall(S, rho, phi1Deg) {
+  const phi1 = phi1Deg * RAD_PER_DEG;
+  if (phi1 === 0) {  // R4 with phi1 = 0: the minor edge is the wall itself; the profile is flat
+    return { rz_mm: 0, ra_mm: 0, branch: 'nose_arc_and_minor_edge' };
+  }
+  const a = edgeAngle(phi1);
+  const p = pitchProfile(S, rho, a);
+  return { rz_mm: p.Rz, ra_mm: arithmeticMeanDeviation(S, rho, a), branch: p.branch };
 }
 
 function handleGrooveWall(res, body) {
@@ -140,12 +217,14 @@ function handleGrooveWall(res, body) {
   }
   const crest = grooveWall(S, rho, phi1);
   const rz = crest.rz_mm * UM_PER_MM;
-  if (!Number.isFinite(rz)) {
+  const ra = crest.ra_mm * UM_PER_MM;
+  if (!Number.isFinite(rz) || !Number.isFinite(ra)) {
     problem(res, 422, 'Input impossible for the model', 'the crest height exceeds the range of a double',
       [{ pointer: '', detail: 'the crest height exceeds the range of a double' }]);
     return;
   }
-  send(res, 200, 'application/json', `{"branch":"${crest.branch}","rz_um":${num(rz)}}`);
+  send(res, 200, 'application/json',
+    `{"branch":"${crest.branch}","ra_um":${num(ra)},"rz_um":${num(rz)}}`);
 }
 
 // --- POST /v1/entry-length, straight entry edge (E1, E2, E14) ---------------------------------

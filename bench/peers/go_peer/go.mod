@@ -1,0 +1,3 @@
+module cutcalc.example/gopeer
+
+go 1.19
