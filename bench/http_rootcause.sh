@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Reproduces the measurements behind service/http_tuning.h, with bench/peers/httplib_echo in its
 # three modes (untuned = Debian's libcpp-httplib 0.11.4 with its compiled-in defaults; setters =
-# runtime setters, the library's own connection loop and fixed pool; tuned = TunedServer, the
+# runtime setters, the library's own connection loop and fixed pool; tuned = cutcalc's Listener and
 # event-loop engine, as cutcalc):
 #   1. 43 ms per request on one keep-alive connection: Nagle + delayed ACK (two send()s per
 #      response); counted with nstat TcpExtDelayedACKs and strace.
@@ -70,7 +70,7 @@ echo "## 1. One keep-alive connection (wrk -c1, 3 s)"
 echo "| server | req/s | p50 ms | p99 ms | delayed ACKs per request |"
 echo "|---|---:|---:|---:|---:|"
 for variant in "untuned:--mode untuned" "untuned + TCP_NODELAY:--mode untuned --nodelay 1" \
-               "tuned (TunedServer):--mode tuned"; do
+               "tuned (cutcalc engine):--mode tuned"; do
   name="${variant%%:*}"
   read -r -a args <<<"${variant#*:}"
   start "${args[@]}"
@@ -108,7 +108,7 @@ echo
 echo "## 2. A fresh request while 8 idle keep-alive connections are open"
 for variant in "untuned + TCP_NODELAY (fixed pool of max(8, cores-1)):--mode untuned --nodelay 1" \
                "setters (library loop and fixed pool):--mode setters" \
-               "tuned (TunedServer, event loops):--mode tuned"; do
+               "tuned (cutcalc engine, event loops):--mode tuned"; do
   name="${variant%%:*}"
   read -r -a args <<<"${variant#*:}"
   start "${args[@]}"

@@ -127,42 +127,36 @@ handler = {"groove-wall": r"api::roughness::handle_groove_wall\b",
            "entry-length": r"api::entry::handle_entry_length\b"}[scenario]
 domain = {"groove-wall": r"domain::roughness::compute_groove_wall_roughness\b",
           "entry-length": r"domain::entry::compute_entry_length\b"}[scenario]
-pre_routing = r"install_middleware\(\)::\{lambda\(httplib::Request const&, httplib::Response&\)#1\}::operator\(\)"
-logger = r"install_middleware\(\)::\{lambda\(httplib::Request const&, httplib::Response const&\)"
-process = share(r"httplib::Server::process_request\b")
-write_response = share(r"httplib::Server::write_response_core\b")
-ours = share(pre_routing)
-metrics = share(logger)
+answer = share(r"service::HttpApp::answer\b")
+finish = share(r"service::HttpApp::finish\b")
+write_response = share(r"service::write_response\b")
 kernel_send = share(r"__x64_sys_sendto\b")
 kernel_recv = share(r"__x64_sys_recvfrom\b")
 kernel_epoll = total(r"__x64_sys_epoll_wait\b", r"__x64_sys_epoll_ctl\b")
-framing = total(r"service::classify_request\b", r"service::library_request\b")
+framing = total(r"service::classify_request\b", r"service::framed_request\b")
 parse = share(r"api::parse_json_body\b")
 dump = share(r"detail::serializer<.*>::dump$")
 handler_share = share(handler)
 domain_share = share(domain)
-rest_of_endpoint = share(r"api::run_json_endpoint\b") - parse - handler_share - dump
-middleware = ours - share(r"api::run_json_endpoint\b")
-library_reading = process - write_response - ours - metrics
-accounted = kernel_send + kernel_recv + kernel_epoll + framing + process
+endpoint = share(r"api::run_json_endpoint\b")
+rest_of_endpoint = endpoint - parse - handler_share - dump
+middleware = answer - endpoint - finish
+accounted = kernel_send + kernel_recv + kernel_epoll + framing + answer + write_response
 rows = [
     ("kernel: send() (loopback TCP, including delivery to the client's socket)", kernel_send, 0),
     ("kernel: recv()", kernel_recv, 0),
     ("kernel: epoll_wait() and epoll_ctl()", kernel_epoll, 0),
-    ("engine: framing (classify_request, library_request)", framing, 0),
-    ("httplib: process_request() in all", process, 0),
-    ("httplib: request line and headers, Request/Response objects (process_request less the rows below)",
-     library_reading, 1),
-    ("httplib: write_response (status line, headers, ranges and encoding checks)", write_response, 1),
-    ("cutcalc: metrics and access log (logger callback)", metrics, 1),
-    ("cutcalc: pre-routing and the calculation", ours, 1),
-    ("middleware: request id, headers, route lookup, response headers", middleware, 2),
-    ("JSON parse (parse_json_body)", parse, 2),
-    ("endpoint handler: fields, domain, building the answer", handler_share, 2),
-    ("domain calculation alone", domain_share, 3),
-    ("JSON dump", dump, 2),
+    ("engine: framing and the one parse (classify_request, framed_request)", framing, 0),
+    ("engine: write_response (status line, headers, body)", write_response, 0),
+    ("cutcalc: HttpApp::answer in all", answer, 0),
+    ("middleware: request id, headers, route lookup, response headers", middleware, 1),
+    ("metrics and access log (finish)", finish, 1),
+    ("JSON parse (parse_json_body)", parse, 1),
+    ("endpoint handler: fields, domain, building the answer", handler_share, 1),
+    ("domain calculation alone", domain_share, 2),
+    ("JSON dump", dump, 1),
     ("rest of run_json_endpoint (media type, finiteness check, destroying documents)",
-     rest_of_endpoint, 2),
+     rest_of_endpoint, 1),
     ("engine loop, scheduling, interrupts and everything else", 100.0 - accounted, 0),
 ]
 print(f"POST {path} ({scenario}), {conns} connections, cutcalc on one core with one event loop:")

@@ -27,11 +27,6 @@ using std::chrono::milliseconds;
 
 // Deadlines and server stop are checked this often.
 constexpr milliseconds kSweepInterval{200};
-// After a connection's last response: how long its unread input is read and dropped, so that the
-// close does not reset the connection before the client has read the response (RFC 9112 9.6).
-constexpr milliseconds kLingerTime{1000};
-// Pipelined requests are served until this much of their responses waits for the socket.
-constexpr std::size_t kOutputHighWater = 256 * 1024;
 // Buffers of an idle connection above this size are given back.
 constexpr std::size_t kIdleBufferBytes = 16 * 1024;
 constexpr std::size_t kReadChunk = 16 * 1024;
@@ -370,7 +365,7 @@ class EventLoopEngine::Loop {
   bool serve_buffered(Connection& connection) {
     const EventLoopSettings& settings = engine_.settings_;
     while (!connection.last_response && !connection.awaiting && !connection.unread().empty()) {
-      if (connection.pending_output() >= kOutputHighWater) return true;
+      if (connection.pending_output() >= settings.limits.max_pending_output_bytes) return true;
       const std::string_view unread = connection.unread();
       const RequestFrame frame =
           classify_request(unread, settings.limits, &connection.fields, &connection.decoded_body);
@@ -468,14 +463,14 @@ class EventLoopEngine::Loop {
   }
 
   // The last response is out: no more writing; read and drop what the client still sends, until
-  // it closes or kLingerTime passes.
+  // it closes or the linger time passes.
   void linger(Connection& connection, Clock::time_point now) {
     const int fd = connection.fd.get();
     if (connection.peer_eof || engine_.stopping_()) return close(fd);
     ::shutdown(fd, SHUT_WR);
     connection.lingering = true;
     connection.in_request = false;
-    connection.deadline = now + kLingerTime;
+    connection.deadline = now + engine_.settings_.limits.linger_time;
     if (!watch(connection, EPOLLIN)) close(fd);
   }
 

@@ -44,9 +44,8 @@ bool is_field_value(std::string_view text) {
                      [](char c) { return kClasses.field_value[static_cast<unsigned char>(c)]; });
 }
 
-// The methods cpp-httplib 0.11 parses (Server::parse_request_line); it answers others with a bare
-// 400 before any of our handlers could name the request.
-bool is_library_method(std::string_view method) {
+// The methods of RFC 9110 (and PATCH, PRI); others are refused before any handler sees them.
+bool is_known_method(std::string_view method) {
   for (const std::string_view known :
        {"GET", "HEAD", "POST", "PUT", "DELETE", "CONNECT", "OPTIONS", "TRACE", "PATCH", "PRI"}) {
     if (method == known) return true;
@@ -250,7 +249,7 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits,
   }
   frame.method = method;
   frame.target = target;
-  if (!is_library_method(method)) return reject(frame, 400, "unknown method");
+  if (!is_known_method(method)) return reject(frame, 400, "unknown method");
   const bool http11 = version == "HTTP/1.1";
   if (!http11 && version != "HTTP/1.0") {
     return reject(frame, 400, "the HTTP version is not HTTP/1.1 or HTTP/1.0");

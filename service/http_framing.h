@@ -12,7 +12,7 @@
 //  - Content-Length values that are not all digits or that differ: 400 (section 6.3);
 //  - a bad chunk size or chunk framing: 400 (section 7.1);
 //  - an HTTP/1.1 request without exactly one Host: 400 (section 3.2);
-//  - a method the HTTP library does not implement, or a line longer than it reads: 400;
+//  - a method outside the known set, or a line over the limit: 400;
 //  - a body over the limit (declared, or as it arrives chunked): 413.
 // Every rejection ends the connection after its response.
 

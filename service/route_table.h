@@ -32,7 +32,7 @@ struct RouteEntry {
 class RouteTable {
  public:
   // The one place that says which methods a path answers (405's and OPTIONS' Allow, a preflight's
-  // Access-Control-Allow-Methods): its handler's method, HEAD with GET (the library answers HEAD
+  // Access-Control-Allow-Methods): its handler's method, HEAD with GET (the engine answers HEAD
   // from the GET handler, without the body) and OPTIONS everywhere (answered before routing).
   void add_get(std::string path, GetHandler handler) {
     routes_.push_back({std::move(path), allow_of(RouteMethod::get), std::move(handler)});
