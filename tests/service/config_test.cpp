@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace cutcalc::service {
 namespace {
@@ -60,6 +61,80 @@ TEST(Config, InvalidValuesExitWithStatus2AndSayWhy) {
   const ConfigOutcome env = parse({}, {{"CUTCALC_PORT", "-1"}});
   EXPECT_FALSE(env.config);
   EXPECT_NE(env.message.find("CUTCALC_PORT"), std::string::npos);
+}
+
+TEST(Config, CalculationPoolFlagsSetThreadsAndQueue) {
+  const ConfigOutcome defaults = parse({});
+  ASSERT_TRUE(defaults.config);
+  EXPECT_EQ(defaults.config->http.calculation_threads, 0U);  // as many as the event loops
+  const ConfigOutcome outcome = parse({"--calculation-threads", "3", "--calculation-queue=40"});
+  ASSERT_TRUE(outcome.config) << outcome.message;
+  EXPECT_EQ(outcome.config->http.calculation_threads, 3U);
+  EXPECT_EQ(outcome.config->http.calculation_queue_limit, 40U);
+  const ConfigOutcome env =
+      parse({}, {{"CUTCALC_CALCULATION_THREADS", "256"}, {"CUTCALC_CALCULATION_QUEUE", "100000"}});
+  ASSERT_TRUE(env.config) << env.message;
+  EXPECT_EQ(env.config->http.calculation_threads, 256U);
+  EXPECT_EQ(env.config->http.calculation_queue_limit, 100000U);
+}
+
+TEST(Config, CalculationPoolFlagsOutOfRangeExitWithStatus2) {
+  for (const auto& args : std::vector<std::vector<std::string>>{{"--calculation-threads", "0"},
+                                                                {"--calculation-threads", "257"},
+                                                                {"--calculation-threads", "two"},
+                                                                {"--calculation-queue", "0"},
+                                                                {"--calculation-queue", "100001"},
+                                                                {"--calculation-queue", "-1"},
+                                                                {"--calculation-queue"}}) {
+    const ConfigOutcome outcome = parse(args);
+    EXPECT_FALSE(outcome.config) << args[0] << " " << (args.size() > 1 ? args[1] : "");
+    EXPECT_EQ(outcome.exit_code, 2);
+    EXPECT_NE(outcome.message.find(args[0]), std::string::npos) << outcome.message;
+  }
+  const ConfigOutcome env = parse({}, {{"CUTCALC_CALCULATION_THREADS", "1000"}});
+  EXPECT_FALSE(env.config);
+  EXPECT_NE(env.message.find("CUTCALC_CALCULATION_THREADS"), std::string::npos);
+}
+
+TEST(Config, ReusePortIsOffUnlessAskedFor) {
+  const ConfigOutcome defaults = parse({});
+  ASSERT_TRUE(defaults.config);
+  EXPECT_FALSE(defaults.config->http.reuse_port);
+  // A bare flag means on, and does not take the next argument as its value.
+  const ConfigOutcome bare = parse({"--reuse-port", "--port", "9001"});
+  ASSERT_TRUE(bare.config) << bare.message;
+  EXPECT_TRUE(bare.config->http.reuse_port);
+  EXPECT_EQ(bare.config->port, 9001);
+  const ConfigOutcome last = parse({"--port", "9001", "--reuse-port"});
+  ASSERT_TRUE(last.config) << last.message;
+  EXPECT_TRUE(last.config->http.reuse_port);
+  for (const std::string value : {"on", "true", "1"}) {
+    const ConfigOutcome on = parse({"--reuse-port=" + value});
+    ASSERT_TRUE(on.config) << on.message;
+    EXPECT_TRUE(on.config->http.reuse_port) << value;
+  }
+  for (const std::string value : {"off", "false", "0"}) {
+    const ConfigOutcome off = parse({"--reuse-port=" + value}, {{"CUTCALC_REUSE_PORT", "on"}});
+    ASSERT_TRUE(off.config) << off.message;
+    EXPECT_FALSE(off.config->http.reuse_port) << value;
+  }
+  const ConfigOutcome env = parse({}, {{"CUTCALC_REUSE_PORT", "on"}});
+  ASSERT_TRUE(env.config) << env.message;
+  EXPECT_TRUE(env.config->http.reuse_port);
+  const ConfigOutcome env_off = parse({}, {{"CUTCALC_REUSE_PORT", "off"}});
+  ASSERT_TRUE(env_off.config) << env_off.message;
+  EXPECT_FALSE(env_off.config->http.reuse_port);
+}
+
+TEST(Config, ReusePortRejectsOtherValues) {
+  const ConfigOutcome flag = parse({"--reuse-port=yes-please"});
+  EXPECT_FALSE(flag.config);
+  EXPECT_EQ(flag.exit_code, 2);
+  EXPECT_NE(flag.message.find("--reuse-port"), std::string::npos) << flag.message;
+  const ConfigOutcome env = parse({}, {{"CUTCALC_REUSE_PORT", "maybe"}});
+  EXPECT_FALSE(env.config);
+  EXPECT_EQ(env.exit_code, 2);
+  EXPECT_NE(env.message.find("CUTCALC_REUSE_PORT"), std::string::npos) << env.message;
 }
 
 TEST(Config, HelpAndVersionExitZero) {

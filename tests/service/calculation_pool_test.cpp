@@ -1,0 +1,346 @@
+// Heavy work never holds up light work, shown without timing: the engine's calculation hook (a
+// DeferredResponse) is held on a test gate while other requests are answered, a full pool is
+// answered at once with its refusal, and pipelined requests keep their order. The engine takes any
+// stream socket, so each connection here is a socketpair; the last test goes through the real
+// service and its metrics.
+
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <regex>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "service/http_event_loop.h"
+#include "support/http_responses.h"
+#include "support/test_server.h"
+
+namespace cutcalc::service {
+namespace {
+
+// A safety net against a hang only; no test measures time.
+constexpr auto kPatience = std::chrono::seconds(10);
+constexpr int kPatienceMs = 10000;
+
+// Holds the calculations that reach it until opened; counts those inside.
+class Gate {
+ public:
+  void pass() {
+    std::unique_lock lock(mutex_);
+    ++inside_;
+    changed_.notify_all();
+    changed_.wait(lock, [this] { return open_; });
+  }
+  void open() {
+    const std::lock_guard lock(mutex_);
+    open_ = true;
+    changed_.notify_all();
+  }
+  // True once `count` calculations have reached the gate.
+  bool wait_inside(int count) {
+    std::unique_lock lock(mutex_);
+    return changed_.wait_for(lock, kPatience, [&] { return inside_ >= count; });
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  int inside_ = 0;
+  bool open_ = false;
+};
+
+// Waits for `condition` (polled), as a safety net against a hang.
+bool eventually(const std::function<bool()>& condition) {
+  const auto until = std::chrono::steady_clock::now() + kPatience;
+  while (!condition()) {
+    if (std::chrono::steady_clock::now() >= until) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return true;
+}
+
+HttpResponse text(int status, std::string body) {
+  HttpResponse response;
+  response.status = status;
+  response.set_content(std::move(body), "text/plain");
+  return response;
+}
+
+// The client's end of a connection the engine adopted.
+class Client {
+ public:
+  explicit Client(EventLoopEngine& engine) {
+    int pair[2];
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0) return;
+    server_fd_ = pair[0];
+    fd_ = pair[1];
+    engine.adopt(pair[0]);
+  }
+  ~Client() { close(); }
+  Client(const Client&) = delete;
+  Client& operator=(const Client&) = delete;
+
+  [[nodiscard]] int server_fd() const { return server_fd_; }
+  void close() {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+  }
+  void send(const std::string& bytes) const {
+    std::size_t sent = 0;
+    while (sent < bytes.size()) {
+      const ssize_t n = ::send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
+      ASSERT_GT(n, 0);
+      sent += static_cast<std::size_t>(n);
+    }
+  }
+  // Reads until `finals` final responses are in, the peer closes, or the safety net is hit.
+  testing::ParsedResponses read_responses(std::size_t finals) {
+    testing::ParsedResponses parsed;
+    const auto until = std::chrono::steady_clock::now() + kPatience;
+    while (std::chrono::steady_clock::now() < until) {
+      parsed = testing::parse_responses(bytes_);
+      if (!parsed.error && parsed.finals() >= finals) break;
+      if (!read_some(kPatienceMs)) break;
+    }
+    return testing::parse_responses(bytes_);
+  }
+  // Reads until the peer closes; false when the safety net is hit first.
+  bool read_to_close() {
+    const auto until = std::chrono::steady_clock::now() + kPatience;
+    while (std::chrono::steady_clock::now() < until) {
+      if (!read_some(kPatienceMs)) return closed_;
+    }
+    return false;
+  }
+  // Whatever has arrived without waiting.
+  std::string arrived_now() {
+    read_some(0);
+    return bytes_;
+  }
+  [[nodiscard]] const std::string& bytes() const { return bytes_; }
+
+ private:
+  // False on close, error or nothing within `timeout_ms`.
+  bool read_some(int timeout_ms) {
+    pollfd watched{fd_, POLLIN, 0};
+    if (::poll(&watched, 1, timeout_ms) <= 0) return false;
+    char buffer[4096];
+    const ssize_t n = ::recv(fd_, buffer, sizeof(buffer), MSG_DONTWAIT);
+    if (n <= 0) {
+      closed_ = n == 0;
+      return false;
+    }
+    bytes_.append(buffer, static_cast<std::size_t>(n));
+    return true;
+  }
+
+  int fd_ = -1;
+  int server_fd_ = -1;
+  std::string bytes_;
+  bool closed_ = false;
+};
+
+std::string request(const std::string& method, const std::string& path,
+                    const std::string& extra = {}) {
+  return method + " " + path + " HTTP/1.1\r\nHost: test\r\n" + extra + "\r\n";
+}
+
+// An engine whose "/heavy" goes to the pool and waits at the gate there (answering "heavy
+// <X-Tag>"), refused with 503 + Retry-After when the pool is full; every other path is answered
+// "light" on the loop. The pool has one thread and room for one waiting job.
+class HeldEngine {
+ public:
+  explicit HeldEngine(std::size_t loops) {
+    EventLoopSettings settings;
+    settings.loops = loops;
+    settings.pool.threads = 1;
+    settings.pool.queue_limit = 1;
+    settings.pool.nice_increment = 0;
+    engine_ = std::make_unique<EventLoopEngine>(
+        settings, [this](const HttpRequest& request) { return serve(request); },
+        [](const EngineError&) {
+          return std::string(
+              "HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n"
+              "Connection: close\r\n\r\n");
+        },
+        [] { return false; }, counters_);
+  }
+  ~HeldEngine() {
+    gate_.open();  // the pool finishes its jobs before the engine is gone
+    engine_.reset();
+  }
+  HeldEngine(const HeldEngine&) = delete;
+  HeldEngine& operator=(const HeldEngine&) = delete;
+
+  EventLoopEngine& engine() { return *engine_; }
+  Gate& gate() { return gate_; }
+  const WorkPoolCounters& pool() const { return counters_.calculations; }
+
+ private:
+  Reply serve(const HttpRequest& request) {
+    if (request.path != "/heavy") return text(200, "light");
+    return DeferredResponse{[this, tag = std::string(request.header("X-Tag"))] {
+                              gate_.pass();
+                              return text(200, "heavy " + tag);
+                            },
+                            [] {
+                              HttpResponse busy = text(503, "busy");
+                              busy.set_header("Retry-After", "1");
+                              return busy;
+                            }};
+  }
+
+  Gate gate_;
+  ConnectionCounters counters_;
+  std::unique_ptr<EventLoopEngine> engine_;
+};
+
+TEST(CalculationPool, LightRequestIsAnsweredWhileAHeavyOneIsHeld) {
+  HeldEngine held(1);  // one loop: the light request shares the heavy one's loop
+  Client heavy(held.engine());
+  Client light(held.engine());
+  heavy.send(request("GET", "/heavy", "X-Tag: a\r\n"));
+  ASSERT_TRUE(held.gate().wait_inside(1));
+
+  light.send(request("GET", "/light"));
+  const testing::ParsedResponses answered = light.read_responses(1);
+  ASSERT_EQ(answered.finals(), 1U) << light.bytes();
+  EXPECT_EQ(answered.responses[0].status, 200);
+  EXPECT_EQ(answered.responses[0].body, "light");
+  EXPECT_EQ(heavy.arrived_now(), "") << "the heavy answer came before its gate opened";
+
+  held.gate().open();
+  const testing::ParsedResponses late = heavy.read_responses(1);
+  ASSERT_EQ(late.finals(), 1U) << heavy.bytes();
+  EXPECT_EQ(late.responses[0].body, "heavy a");
+}
+
+TEST(CalculationPool, FullPoolIsRefusedAtOnceWithRetryAfter) {
+  HeldEngine held(2);
+  Client first(held.engine());
+  Client second(held.engine());
+  Client third(held.engine());
+  first.send(request("GET", "/heavy", "X-Tag: 1\r\n"));
+  ASSERT_TRUE(held.gate().wait_inside(1));  // the pool's one thread is held
+  second.send(request("GET", "/heavy", "X-Tag: 2\r\n"));
+  ASSERT_TRUE(eventually([&] { return held.pool().queued.load() == 1; }));  // the queue is full
+
+  third.send(request("GET", "/heavy", "X-Tag: 3\r\n"));
+  const testing::ParsedResponses refused = third.read_responses(1);
+  ASSERT_EQ(refused.finals(), 1U) << third.bytes();
+  EXPECT_EQ(refused.responses[0].status, 503);
+  EXPECT_EQ(refused.responses[0].header("retry-after"), "1");
+  EXPECT_EQ(held.pool().refused.load(), 1U);
+
+  held.gate().open();
+  const testing::ParsedResponses one = first.read_responses(1);
+  const testing::ParsedResponses two = second.read_responses(1);
+  ASSERT_EQ(one.finals(), 1U) << first.bytes();
+  ASSERT_EQ(two.finals(), 1U) << second.bytes();
+  EXPECT_EQ(one.responses[0].body, "heavy 1");
+  EXPECT_EQ(two.responses[0].body, "heavy 2");
+  EXPECT_EQ(held.pool().jobs.load(), 2U);
+}
+
+TEST(CalculationPool, PipelinedRequestsAreAnsweredInOrderBehindAHeldOne) {
+  HeldEngine held(1);
+  Client client(held.engine());
+  client.send(request("GET", "/heavy", "X-Tag: first\r\n") + request("GET", "/light"));
+  ASSERT_TRUE(held.gate().wait_inside(1));
+  held.gate().open();
+  const testing::ParsedResponses answered = client.read_responses(2);
+  ASSERT_EQ(answered.finals(), 2U) << client.bytes();
+  EXPECT_EQ(answered.responses[0].body, "heavy first");
+  EXPECT_EQ(answered.responses[1].body, "light");
+}
+
+TEST(CalculationPool, AnswerForAConnectionClosedMeanwhileGoesNowhere) {
+  HeldEngine held(1);
+  auto gone = std::make_unique<Client>(held.engine());
+  const int gone_fd = gone->server_fd();
+  gone->send(request("GET", "/heavy", "X-Tag: stale\r\n"));
+  ASSERT_TRUE(held.gate().wait_inside(1));
+  gone.reset();  // the client hangs up while its calculation runs
+  ASSERT_TRUE(eventually([&] { return held.engine().open_connections() == 0; }));
+
+  // Most likely on the descriptor number the closed connection had: the stale answer must still
+  // not reach it (the engine tells connections apart by id, not descriptor).
+  Client next(held.engine());
+  SCOPED_TRACE(next.server_fd() == gone_fd ? "descriptor reused" : "descriptor not reused");
+  held.gate().open();
+  ASSERT_TRUE(eventually([&] {
+    return held.pool().jobs.load() == 1 && held.pool().running.load() == 0;
+  }));  // the stale answer is posted to the loop
+  next.send(request("GET", "/light", "Connection: close\r\n"));
+  ASSERT_TRUE(next.read_to_close()) << next.bytes();
+  const testing::ParsedResponses answered = testing::parse_responses(next.bytes());
+  ASSERT_FALSE(answered.error) << *answered.error;
+  ASSERT_EQ(answered.finals(), 1U) << next.bytes();
+  EXPECT_EQ(answered.responses[0].body, "light");
+}
+
+TEST(CalculationPool, HeadOfADeferredRequestHasContentLengthButNoBody) {
+  HeldEngine held(1);
+  held.gate().open();
+  Client client(held.engine());
+  client.send(request("HEAD", "/heavy", "X-Tag: h\r\n") +
+              request("GET", "/light", "Connection: close\r\n"));
+  ASSERT_TRUE(client.read_to_close()) << client.bytes();
+  const testing::ParsedResponses answered = testing::parse_responses(client.bytes());
+  ASSERT_FALSE(answered.error) << *answered.error;
+  ASSERT_EQ(answered.finals(), 2U) << client.bytes();
+  EXPECT_EQ(answered.responses[0].header("content-length"),
+            std::to_string(std::string("heavy h").size()));
+  EXPECT_EQ(answered.responses[0].body, "");
+  EXPECT_EQ(answered.responses[1].body, "light");
+}
+
+// The pool's jobs counter, from the real service's /metrics.
+std::uint64_t pool_jobs() {
+  const testing::JsonReply metrics = testing::get("/metrics");
+  EXPECT_EQ(metrics.status, 200);
+  std::smatch match;
+  const std::regex line(R"((?:^|\n)cutcalc_calculation_pool_jobs_total (\d+))");
+  if (!std::regex_search(metrics.body, match, line)) {
+    ADD_FAILURE() << "no cutcalc_calculation_pool_jobs_total in /metrics";
+    return 0;
+  }
+  return std::stoull(match[1].str());
+}
+
+// A request the reference file expects a 200 for.
+std::string valid_request(const std::string& file) {
+  const nlohmann::json reference = testing::load_reference(file);
+  for (const nlohmann::json& test_case : reference.at("cases")) {
+    if (test_case.at("expect").value("status", 0) == 200) return test_case.at("request").dump();
+  }
+  ADD_FAILURE() << "no 200 case in " << file;
+  return "{}";
+}
+
+TEST(CalculationPool, ProgramsGoToThePoolAndOtherCalculationsStayOnTheLoop) {
+  const std::string program = valid_request("polygon-hole.json");
+  const std::string groove = valid_request("roughness-groove-wall.json");
+  const std::uint64_t before = pool_jobs();
+  ASSERT_EQ(testing::post("/v1/roughness/groove-wall", groove).status, 200);
+  ASSERT_EQ(testing::post("/v1/roughness/groove-wall", groove).status, 200);
+  EXPECT_EQ(pool_jobs(), before);
+  ASSERT_EQ(testing::post("/v1/polygon-hole/gcode", program).status, 200);
+  EXPECT_EQ(pool_jobs(), before + 1);
+}
+
+}  // namespace
+}  // namespace cutcalc::service
