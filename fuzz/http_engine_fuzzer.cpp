@@ -1,6 +1,6 @@
-// Byte-level fuzzer of the HTTP engine: the real service (HttpApp: engine, framing, calculation pool,
-// the route table and every handler) serves one end of a socketpair; the fuzzer's bytes go in at
-// the other, cut into pieces of fuzzer-chosen sizes, each piece waited on until the engine has
+// Byte-level fuzzer of the HTTP engine: the real service (HttpApp: engine, framing, calculation
+// pool, the route table and every handler) serves one end of a socketpair; the fuzzer's bytes go in
+// at the other, cut into pieces of fuzzer-chosen sizes, each piece waited on until the engine has
 // read it, so that requests arrive split at every place. Then the client half-closes and reads
 // until the engine closes.
 //
