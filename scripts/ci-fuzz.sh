@@ -16,8 +16,10 @@
 # that a fresh connection is still served). Its dictionary is fuzz/http.dict.
 #
 # Time: one request harness per route and answer form (13 today) x CUTCALC_FUZZ_SECONDS (default 30)
-# + the engine harness for CUTCALC_FUZZ_ENGINE_SECONDS (default 90) = 8 minutes of fuzzing, plus the build (about 3 minutes
-# from scratch on two idle cores; incremental afterwards).
+# + the engine harness for CUTCALC_FUZZ_ENGINE_SECONDS (default 90) = 8 minutes of fuzzing, run
+# CUTCALC_FUZZ_LANES harnesses at a time (default: one per CPU; a libFuzzer process uses one), so
+# about 4 minutes on two cores, plus the build (about 6 minutes from scratch on two idle cores;
+# incremental afterwards).
 #
 # Environment:
 #   CUTCALC_FUZZ_SECONDS    seconds per request harness (default 30)
@@ -25,6 +27,7 @@
 #   CUTCALC_FUZZ_RUNS       run each harness for this many inputs instead of a time (report runs)
 #   CUTCALC_FUZZ_TIMEOUT    seconds one input may take before it counts as a hang (default 30)
 #   CUTCALC_FUZZERS         space-separated harness names to run (default: all of them)
+#   CUTCALC_FUZZ_LANES      harnesses run at the same time (default: the CPU count)
 #   CUTCALC_REFERENCE_DIR   the reference cases (default ../shared/reference)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -35,6 +38,7 @@ runs=${CUTCALC_FUZZ_RUNS:-}
 # A hang detector, not a speed limit: the largest legal polygon program (8 MB, 0.13 s in the
 # release service) takes about 4 s here under ASan + UBSan + coverage with the oracle on a busy box.
 timeout=${CUTCALC_FUZZ_TIMEOUT:-30}
+lanes=${CUTCALC_FUZZ_LANES:-$(nproc)}
 reference_dir=${CUTCALC_REFERENCE_DIR:-../shared/reference}
 build_dir=build/fuzz
 run_dir=$build_dir/run
@@ -77,7 +81,8 @@ while read -r name path form; do
   harness_route[$name]="$path $form"
   all_fuzzers+=("$name")
 done <"$run_dir/seeds/harnesses.txt"
-all_fuzzers+=(http_engine_fuzzer)
+# The engine harness first: the longest, so the lanes end together.
+all_fuzzers=(http_engine_fuzzer "${all_fuzzers[@]}")
 if [[ -n ${CUTCALC_FUZZERS:-} ]]; then
   read -r -a fuzzers <<<"$CUTCALC_FUZZERS"
 else
@@ -89,12 +94,14 @@ else
   echo "=== fuzz: ${#fuzzers[@]} harnesses, ${seconds} s each (the HTTP engine ${engine_seconds} s)"
 fi
 
-fuzzer_pid=
+declare -A running=() # pid -> harness
+declare -A started=()  # harness -> $SECONDS at its start
 cleanup() {
-  if [[ -n $fuzzer_pid ]] && kill -0 "$fuzzer_pid" 2>/dev/null; then
-    kill "$fuzzer_pid" 2>/dev/null || true
-    wait "$fuzzer_pid" 2>/dev/null || true
-  fi
+  local pid
+  for pid in "${!running[@]}"; do
+    kill "$pid" 2>/dev/null || true
+    wait "$pid" 2>/dev/null || true
+  done
 }
 trap cleanup EXIT
 trap 'exit 130' INT TERM
@@ -105,11 +112,14 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 fuzz_start=$SECONDS
 failed=()
 total_execs=0
-for fuzzer in "${fuzzers[@]}"; do
+
+# Starts one harness in the background.
+launch() {
+  local fuzzer=$1 seeds binary corpus dict log
+  local route=() limit=()
   seeds=${fuzzer%_fuzzer}
   seeds=${seeds%_text}
   binary=$build_dir/$fuzzer
-  route=()
   if [[ $fuzzer != http_engine_fuzzer ]]; then
     [[ -n ${harness_route[$fuzzer]:-} ]] ||
       { echo "ci-fuzz: no harness $fuzzer (harnesses: ${all_fuzzers[*]})" >&2; exit 1; }
@@ -133,27 +143,39 @@ for fuzzer in "${fuzzers[@]}"; do
   fi
   log=$run_dir/logs/$fuzzer.log
   mkdir -p "$corpus"
-  started=$SECONDS
+  started[$fuzzer]=$SECONDS
   env "${route[@]}" "$binary" "$corpus" "$run_dir/seeds/$seeds" -dict="$dict" \
     "${limit[@]}" -timeout="$timeout" -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1 \
     -artifact_prefix="$run_dir/artifacts/$fuzzer-" >"$log" 2>&1 &
-  fuzzer_pid=$!
-  status=0
-  wait "$fuzzer_pid" || status=$?
-  fuzzer_pid=
+  running[$!]=$fuzzer
+}
+
+# Waits for any running harness and reports it.
+reap() {
+  local pid status=0 fuzzer log execs rate coverage
+  wait -n -p pid "${!running[@]}" || status=$?
+  fuzzer=${running[$pid]}
+  unset "running[$pid]"
+  log=$run_dir/logs/$fuzzer.log
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   coverage=$(grep -Eo 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 || true)
   total_execs=$((total_execs + ${execs:-0}))
   printf '%-32s %10s execs %6s exec/s  %-22s %4d s  %s\n' "$fuzzer" "${execs:-?}" "${rate:-?}" \
-    "${coverage:-cov: ?}" $((SECONDS - started)) "$([[ $status -eq 0 ]] && echo ok || echo "FAILED ($status)")"
+    "${coverage:-cov: ?}" $((SECONDS - started[$fuzzer])) "$([[ $status -eq 0 ]] && echo ok || echo "FAILED ($status)")"
   if [[ $status -ne 0 ]] || compgen -G "$run_dir/artifacts/$fuzzer-*" >/dev/null; then
     failed+=("$fuzzer")
     echo "--- $fuzzer: end of $log"
     grep -v -E '^(#[0-9]+|INFO:|MS:|stat::)' "$log" | tail -60 || true
     ls -l "$run_dir/artifacts/$fuzzer-"* 2>/dev/null || true
   fi
+}
+
+for fuzzer in "${fuzzers[@]}"; do
+  while ((${#running[@]} >= lanes)); do reap; done
+  launch "$fuzzer"
 done
+while ((${#running[@]} > 0)); do reap; done
 
 echo "ci-fuzz: ${#fuzzers[@]} harnesses, $total_execs executions in $((SECONDS - fuzz_start)) s" \
   "(build $build_seconds s), ${#failed[@]} failing${failed[*]:+: ${failed[*]}}"
