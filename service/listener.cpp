@@ -96,9 +96,11 @@ bool Listener::run(const std::function<void(int sock)>& adopt) {
 }
 
 void Listener::stop() {
-  stopped_.store(true);
+  // The wake-up first: once run() sees `stopped_`, its caller may destroy this listener and its
+  // descriptors, so stop() must not touch them after the store.
   const std::uint64_t one = 1;
   [[maybe_unused]] const auto n = ::write(wake_.get(), &one, sizeof(one));
+  stopped_.store(true);
 }
 
 }  // namespace cutcalc::service
