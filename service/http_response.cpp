@@ -27,6 +27,7 @@ std::string_view HttpResponse::header(std::string_view name) const {
   return {};
 }
 
+// RFC 9110 section 15 names.
 std::string_view reason_phrase(int status) {
   switch (status) {
     case 100:
@@ -44,7 +45,7 @@ std::string_view reason_phrase(int status) {
     case 406:
       return "Not Acceptable";
     case 413:
-      return "Payload Too Large";
+      return "Content Too Large";
     case 415:
       return "Unsupported Media Type";
     case 422:

@@ -29,7 +29,7 @@ TEST(WriteResponse, StatusLineCarriesTheReasonPhrase) {
   EXPECT_EQ(written(json(404, "{}")).rfind("HTTP/1.1 404 Not Found\r\n", 0), 0U);
   EXPECT_EQ(written(json(422, "{}")).rfind("HTTP/1.1 422 Unprocessable Content\r\n", 0), 0U);
   EXPECT_EQ(written(json(503, "{}")).rfind("HTTP/1.1 503 Service Unavailable\r\n", 0), 0U);
-  EXPECT_EQ(reason_phrase(413), "Payload Too Large");
+  EXPECT_EQ(reason_phrase(413), "Content Too Large");  // RFC 9110 15.5.14
 }
 
 TEST(WriteResponse, KeepAliveOnHttp11SaysNothingAboutTheConnection) {
