@@ -3,7 +3,9 @@
 then polls its GET /readyz every --interval-ms on a fresh connection each time until the process
 has exited (gone or a zombie), and prints what a health checker would have seen: one line
   WATCH {"saw_503_before_refused": true|false, "first_503_ms": .., "last_503_ms": .., ...}
-and one human-readable line of the phases (e.g. "200 x1 0-0 ms | 503 x40 50-2000 ms | refused x3").
+(after a first line SIGTERM_AT_MS <epoch ms>) and one human-readable line of the phases, e.g.
+  503 x40 0-1950 ms | refused x3 2000-2100 ms
+A process still running after --limit-s gets SIGKILL (so that the caller's wait ends).
 
 usage: readyz_watch.py PID PORT [--interval-ms 50] [--limit-s 60]
 Outcomes of a probe: an HTTP status ("200", "503", ...), "refused" (connection refused: the
@@ -69,6 +71,7 @@ def main():
     interval = args.interval_ms / 1000.0
     t0 = time.monotonic()
     os.kill(args.pid, signal.SIGTERM)
+    print(f"SIGTERM_AT_MS {int(time.time() * 1000)}", flush=True)  # wall clock, for the caller's stop time
     samples = []  # (ms since SIGTERM, outcome)
     tick = 0
     while alive(args.pid) and time.monotonic() - t0 < args.limit_s:
@@ -78,6 +81,9 @@ def main():
         if delay > 0:
             time.sleep(delay)
     exit_ms = round((time.monotonic() - t0) * 1000)
+    killed = alive(args.pid)
+    if killed:
+        os.kill(args.pid, signal.SIGKILL)
 
     t503 = [t for t, o in samples if o == "503"]
     refused = [t for t, o in samples if o == "refused"]
@@ -92,12 +98,13 @@ def main():
             phases.append([o, t, t, 1])
     result = {
         "saw_503_before_refused": saw,
+        # first to last 503 seen: 0 for a single 503 (the race at the instant of SIGTERM can give one)
+        "phase_503_ms": (t503[-1] - t503[0]) if t503 else None,
         "first_503_ms": t503[0] if t503 else None,
         "last_503_ms": t503[-1] if t503 else None,
-        # the 503 phase as a checker polling every interval sees it: first to last 503, plus one interval
-        "phase_503_ms": (t503[-1] - t503[0] + round(args.interval_ms)) if t503 else 0,
         "first_refused_ms": first_refused,
         "exit_seen_ms": exit_ms,
+        "killed_after_limit": killed,
         "probes": len(samples),
         "outcomes": {o: sum(1 for _, x in samples if x == o) for o in sorted({x for _, x in samples})},
     }

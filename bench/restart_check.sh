@@ -32,7 +32,8 @@
 #
 # usage: bench/restart_check.sh [--binary PATH] [--proxy nginx|haproxy|both] [--duration S]
 #                               [--runs N] [--server-args "ARGS"] [--lossless-settings]
-#                               [--a-at S] [--b-at S] [--client-cpu N] [--strict]
+#                               [--a-at S] [--b-at S] [--client-cpu N] [--min-503-ms MS]
+#                               [--strict]
 #   env: CUTCALC_BIN, RESTART_CHECK_DURATION, RESTART_CHECK_RUNS (flags win)
 #   --binary       default build/release/service/cutcalc, started as
 #                  cutcalc --host 127.0.0.1 --port P --log-level warn ARGS
@@ -43,6 +44,9 @@
 #                  and duration*3/4; B at least 1 s after A)
 #   --server-args  extra flags for both instances, e.g. "--lame-duck-ms 2500"
 #   --client-cpu   run wrk under taskset -c N (default: not pinned)
+#   --min-503-ms   the 503 phase (first to last 503 the watcher saw) that counts as "seen",
+#                  default 100 (3 probes): one 503 at the instant of SIGTERM is a race that a
+#                  service closing its port at once can win by luck, not a lame-duck period
 #   --strict       exit 3 unless every run of every proxy had 0 non-2xx and 0 socket errors,
 #                  every instance exited 0 and every watcher saw a 503 before the port closed
 # Output: a table on stdout and PASS/FAIL lines; wrk's output, the configs, the proxy and server
@@ -69,6 +73,7 @@ A_AT=""
 B_AT=""
 STRICT=0
 CONNS=32
+MIN_503_MS=100
 SCENARIO=groove-wall
 
 die() { echo "restart_check: $*" >&2; exit 2; }
@@ -84,6 +89,7 @@ while [[ $# -gt 0 ]]; do
     --client-cpu) CLIENT_CPU="$2"; shift 2 ;;
     --a-at) A_AT="$2"; shift 2 ;;
     --b-at) B_AT="$2"; shift 2 ;;
+    --min-503-ms) MIN_503_MS="$2"; shift 2 ;;
     --strict) STRICT=1; shift ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d'; exit 0 ;;
     *) die "unknown argument: $1 (see --help)" ;;
@@ -97,6 +103,7 @@ case "$PROXY" in
 esac
 [[ "$DURATION" =~ ^[0-9]+$ && "$DURATION" -ge 10 && "$DURATION" -le 300 ]] || die "--duration must be 10..300 s"
 [[ "$RUNS" =~ ^[0-9]+$ && "$RUNS" -ge 1 && "$RUNS" -le 20 ]] || die "--runs must be 1..20"
+[[ "$MIN_503_MS" =~ ^[0-9]+$ ]] || die "--min-503-ms must be a number of milliseconds"
 [[ -z "$CLIENT_CPU" || "$CLIENT_CPU" =~ ^[0-9]+$ ]] || die "--client-cpu must be a CPU number"
 A_AT="${A_AT:-$((DURATION / 5))}"
 B_AT="${B_AT:-$((DURATION * 3 / 4))}"
@@ -254,6 +261,8 @@ restart_instance() {  # name tag
   INSTANCE_PID[$name]=""
   wait "$WATCH_PID" || true
   WATCH_PID=""
+  t0="$(awk '/^SIGTERM_AT_MS / {print $2; exit}' "$watch")"
+  [[ -n "$t0" ]] || die "the /readyz watcher did not send SIGTERM to $name: $(cat "$watch")"
   start_instance "$name" "$RESULTS/$tag-server-$name.log"
   t2="$(now_ms)"
   EXIT_CODE[$name]=$rc
@@ -269,7 +278,7 @@ printf 'proxy\trun\trequests\tnon2xx\tconnect\tread\twrite\ttimeout\tA_exit\tA_s
   echo "host: $(uname -srm), $(nproc) cores, load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "git: $(git -C "$ROOT" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)"
   echo "cutcalc: $CUTCALC_BIN (built $(date -u -r "$CUTCALC_BIN" +%FT%TZ)) --log-level warn $SERVER_ARGS"
-  echo "proxies: ${PROXIES[*]} ($("$NGINX_BIN" -v 2>&1 | sed 's/^nginx version: //'); $("$HAPROXY_BIN" -v | head -1 | cut -d' ' -f1-3)), settings: $([[ $LOSSLESS -eq 1 ]] && echo lossless || echo default)"
+  echo "proxies: ${PROXIES[*]} ($("$NGINX_BIN" -v 2>&1 | sed 's/^nginx version: //'); $("$HAPROXY_BIN" -v | head -1 | cut -d' ' -f1-3)), $([[ $LOSSLESS -eq 1 ]] && echo "lossless settings (--lossless-settings)" || echo "default retry settings")"
   echo "load: wrk -t2 -c$CONNS -d${DURATION}s POST $PATH_URL$([[ -n "$CLIENT_CPU" ]] && echo " (taskset -c $CLIENT_CPU)"); SIGTERM to A at ${A_AT} s, to B at ${B_AT} s; $RUNS run(s) per proxy"
 } | tee "$RESULTS/meta.txt" >&2
 
@@ -310,7 +319,7 @@ for proxy in "${PROXIES[@]}"; do
       delay_ms=$((start + at * 1000 - $(now_ms)))
       if ((delay_ms > 0)); then sleep "$((delay_ms / 1000)).$(printf '%03d' $((delay_ms % 1000)))"; fi
       restart_instance "$name" "$tag"
-      echo "restart_check: $tag: $name exited $((EXIT_CODE[$name])) ${STOP_MS[$name]} ms after SIGTERM, back in ${BACK_MS[$name]} ms; readyz: $(tail -1 "$RESULTS/$tag-watch-$name.txt")" >&2
+      echo "restart_check: $tag: $name exited $((EXIT_CODE[$name])) ${STOP_MS[$name]} ms after SIGTERM, back in ${BACK_MS[$name]} ms; /readyz after SIGTERM: $(tail -1 "$RESULTS/$tag-watch-$name.txt")" >&2
     done
     wait "$WRK_PID" || true
     WRK_PID=""
@@ -327,9 +336,10 @@ for proxy in "${PROXIES[@]}"; do
     done
 
     "$PYTHON" - "$RESULTS/$tag-wrk.txt" "$RESULTS/$tag-watch-A.txt" "$RESULTS/$tag-watch-B.txt" \
-      "$proxy" "$run" "${EXIT_CODE[A]}" "${STOP_MS[A]}" "${EXIT_CODE[B]}" "${STOP_MS[B]}" >>"$SUMMARY" <<'PY'
+      "$proxy" "$run" "${EXIT_CODE[A]}" "${STOP_MS[A]}" "${EXIT_CODE[B]}" "${STOP_MS[B]}" "$MIN_503_MS" >>"$SUMMARY" <<'PY'
 import json, sys
-wrk_file, watch_a, watch_b, proxy, run, a_rc, a_ms, b_rc, b_ms = sys.argv[1:]
+wrk_file, watch_a, watch_b, proxy, run, a_rc, a_ms, b_rc, b_ms, min_503_ms = sys.argv[1:]
+min_503_ms = int(min_503_ms)
 res = None
 for line in open(wrk_file):
     if line.startswith("WRK_RESULT "):
@@ -337,14 +347,17 @@ for line in open(wrk_file):
 def watch(path):
     for line in open(path):
         if line.startswith("WATCH "):
-            return json.loads(line[len("WATCH "):])
-    return {"saw_503_before_refused": False, "phase_503_ms": 0}
+            w = json.loads(line[len("WATCH "):])
+            w["seen"] = w["saw_503_before_refused"] and w["phase_503_ms"] >= min_503_ms
+            w["phase"] = "-" if w["phase_503_ms"] is None else w["phase_503_ms"]
+            return w
+    return {"seen": False, "phase": "-"}
 wa, wb = watch(watch_a), watch(watch_b)
 if res is None:
     res = {k: -1 for k in ("requests", "non2xx", "connect", "read", "write", "timeout")}
-yn = lambda w: "yes" if w["saw_503_before_refused"] else "no"
+yn = lambda w: "yes" if w["seen"] else "no"
 print("\t".join(str(x) for x in (proxy, run, res["requests"], res["non2xx"], res["connect"], res["read"],
-      res["write"], res["timeout"], a_rc, a_ms, yn(wa), wa["phase_503_ms"], b_rc, b_ms, yn(wb), wb["phase_503_ms"])))
+      res["write"], res["timeout"], a_rc, a_ms, yn(wa), wa["phase"], b_rc, b_ms, yn(wb), wb["phase"])))
 PY
     tail -1 "$SUMMARY" | awk -F'\t' '{printf "restart_check: %s run %s: %s requests, %s non-2xx, socket errors connect %s read %s write %s timeout %s\n", $1, $2, $3, $4, $5, $6, $7, $8}' >&2
   done
@@ -354,10 +367,11 @@ done
 cat "$RESULTS/meta.txt"
 echo
 verdict=0
-"$PYTHON" - "$SUMMARY" <<'PY' >"$RESULTS/summary.md" || verdict=$?
+"$PYTHON" - "$SUMMARY" "$MIN_503_MS" <<'PY' >"$RESULTS/summary.md" || verdict=$?
 import csv, sys
+min_503_ms = int(sys.argv[2])
 rows = list(csv.DictReader(open(sys.argv[1]), delimiter="\t"))
-print("| proxy | run | requests | non-2xx | socket errors (c/r/w/t) | A exit, stop | A /readyz 503 first | B exit, stop | B /readyz 503 first |")
+print("| proxy | run | requests | non-2xx | socket errors (c/r/w/t) | A exit, stop | A /readyz 503 before close (503 phase) | B exit, stop | B /readyz 503 before close (503 phase) |")
 print("|---|---|---|---|---|---|---|---|---|")
 ok_all = True
 by_proxy = {}
@@ -374,7 +388,7 @@ for proxy, goods in by_proxy.items():
     verdict = "PASS" if all(goods) else "FAIL"
     ok_all &= all(goods)
     print(f"{verdict}: {proxy}: {sum(goods)} of {len(goods)} runs with 0 non-2xx, 0 socket errors, "
-          "exit 0 after SIGTERM and /readyz 503 before the port closed")
+          f"exit 0 after SIGTERM and /readyz 503 for >= {min_503_ms} ms before the port closed")
 sys.exit(0 if ok_all else 1)
 PY
 cat "$RESULTS/summary.md"
