@@ -349,9 +349,9 @@ def watch(path):
         if line.startswith("WATCH "):
             w = json.loads(line[len("WATCH "):])
             w["seen"] = w["saw_503_before_refused"] and w["phase_503_ms"] >= min_503_ms
-            w["phase"] = "-" if w["phase_503_ms"] is None else w["phase_503_ms"]
+            w["phase"] = "no 503" if w["phase_503_ms"] is None else f'{w["phase_503_ms"]} ms'
             return w
-    return {"seen": False, "phase": "-"}
+    return {"seen": False, "phase": "no watcher output"}
 wa, wb = watch(watch_a), watch(watch_b)
 if res is None:
     res = {k: -1 for k in ("requests", "non2xx", "connect", "read", "write", "timeout")}
@@ -382,7 +382,7 @@ for r in rows:
     by_proxy.setdefault(r["proxy"], []).append(good)
     print(f"| {r['proxy']} | {r['run']} | {r['requests']} | {r['non2xx']} | {sock} "
           f"({r['connect']}/{r['read']}/{r['write']}/{r['timeout']}) | {r['A_exit']}, {r['A_stop_ms']} ms | "
-          f"{r['A_saw503']} ({r['A_503_ms']} ms) | {r['B_exit']}, {r['B_stop_ms']} ms | {r['B_saw503']} ({r['B_503_ms']} ms) |")
+          f"{r['A_saw503']} ({r['A_503_ms']}) | {r['B_exit']}, {r['B_stop_ms']} ms | {r['B_saw503']} ({r['B_503_ms']}) |")
 print()
 for proxy, goods in by_proxy.items():
     verdict = "PASS" if all(goods) else "FAIL"
