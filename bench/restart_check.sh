@@ -377,18 +377,22 @@ ok_all = True
 by_proxy = {}
 for r in rows:
     sock = sum(int(r[k]) for k in ("connect", "read", "write", "timeout"))
-    good = (int(r["requests"]) > 0 and r["non2xx"] == "0" and sock == 0 and r["A_exit"] == "0"
-            and r["B_exit"] == "0" and r["A_saw503"] == "yes" and r["B_saw503"] == "yes")
-    by_proxy.setdefault(r["proxy"], []).append(good)
+    p = by_proxy.setdefault(r["proxy"], {"runs": 0, "clean": 0, "stops": 0, "exit0": 0, "seen": 0})
+    p["runs"] += 1
+    p["clean"] += int(int(r["requests"]) > 0 and r["non2xx"] == "0" and sock == 0)
+    p["stops"] += 2
+    p["exit0"] += (r["A_exit"] == "0") + (r["B_exit"] == "0")
+    p["seen"] += (r["A_saw503"] == "yes") + (r["B_saw503"] == "yes")
     print(f"| {r['proxy']} | {r['run']} | {r['requests']} | {r['non2xx']} | {sock} "
           f"({r['connect']}/{r['read']}/{r['write']}/{r['timeout']}) | {r['A_exit']}, {r['A_stop_ms']} ms | "
           f"{r['A_saw503']} ({r['A_503_ms']}) | {r['B_exit']}, {r['B_stop_ms']} ms | {r['B_saw503']} ({r['B_503_ms']}) |")
 print()
-for proxy, goods in by_proxy.items():
-    verdict = "PASS" if all(goods) else "FAIL"
-    ok_all &= all(goods)
-    print(f"{verdict}: {proxy}: {sum(goods)} of {len(goods)} runs with 0 non-2xx, 0 socket errors, "
-          f"exit 0 after SIGTERM and /readyz 503 for >= {min_503_ms} ms before the port closed")
+for proxy, p in by_proxy.items():
+    ok = p["clean"] == p["runs"] and p["exit0"] == p["stops"] and p["seen"] == p["stops"]
+    ok_all &= ok
+    print(f"{'PASS' if ok else 'FAIL'}: {proxy}: 0 non-2xx and 0 socket errors in {p['clean']} of {p['runs']} runs; "
+          f"exit 0 after SIGTERM in {p['exit0']} of {p['stops']} stops; /readyz 503 for >= {min_503_ms} ms "
+          f"before the port closed in {p['seen']} of {p['stops']} stops")
 sys.exit(0 if ok_all else 1)
 PY
 cat "$RESULTS/summary.md"
