@@ -86,14 +86,33 @@ std::optional<HttpResponse> ask(int port, const std::string& request) {
 }
 
 // Asks /readyz on fresh connections until it says 503 (the lame duck has begun) or the limit.
-std::optional<HttpResponse> until_readyz_503(int port) {
+// Keeps the service's log pipe drained meanwhile (a full pipe would stop it).
+std::optional<HttpResponse> until_readyz_503(ServiceProcess& service) {
   const auto limit = Clock::now() + kUntilLimit;
   while (Clock::now() < limit) {
-    const auto response = ask(port, get("/readyz"));
+    service.output();
+    const auto response = ask(service.port(), get("/readyz"));
     if (response && response->status == 503) return response;
     std::this_thread::sleep_for(milliseconds{5});
   }
   return std::nullopt;
+}
+
+// Until the service has taken the signal in (or the limit): /readyz on a new connection says 503,
+// or new connections are refused (no lame duck).
+bool until_draining(ServiceProcess& service) {
+  const auto limit = Clock::now() + kUntilLimit;
+  while (Clock::now() < limit) {
+    service.output();
+    RawConnection connection(service.port());
+    if (!connection.connected()) return true;
+    if (connection.send_all(get("/readyz"))) {
+      const ParsedResponses parsed = parse_responses(connection.read_responses(1, kAnswerLimitMs));
+      if (parsed.finals() == 1 && parsed.responses.back().status == 503) return true;
+    }
+    std::this_thread::sleep_for(milliseconds{5});
+  }
+  return false;
 }
 
 // A gauge's value from the Prometheus text, or nullopt.
@@ -105,14 +124,16 @@ std::optional<std::uint64_t> gauge(const std::string& metrics, const std::string
 }
 
 // Reads `name` from /metrics on fresh connections until `done(value)` or the limit; the last value
-// read (nullopt when none was).
+// read (nullopt when none was). Keeps the service's log pipe drained meanwhile.
 template <typename Done>
-std::optional<std::uint64_t> until_gauge(int port, const std::string& name, Done done) {
+std::optional<std::uint64_t> until_gauge(ServiceProcess& service, const std::string& name,
+                                         Done done) {
   std::optional<std::uint64_t> value;
   const auto limit = Clock::now() + kUntilLimit;
   while (Clock::now() < limit) {
-    const auto response =
-        ask(port, "GET /metrics HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n");
+    service.output();
+    const auto response = ask(
+        service.port(), "GET /metrics HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n");
     if (response && response->status == 200) {
       value = gauge(response->body, name);
       if (value && done(*value)) return value;
@@ -120,6 +141,24 @@ std::optional<std::uint64_t> until_gauge(int port, const std::string& name, Done
     std::this_thread::sleep_for(milliseconds{20});
   }
   return value;
+}
+
+// Most of a request body, more than the metrics request's own connection could hold in buffers.
+constexpr std::size_t kPartialBody = 48 * 1024;
+
+// Sends a head and kPartialBody bytes of its body on a new connection and reads the buffer gauge
+// until it counts them (or the limit); then closes that connection. The gauge is as of the event
+// loops' last sweep, so a value this high tells that a sweep has run since the call began. Returns
+// the last value read.
+std::optional<std::uint64_t> until_a_sweep_counts_a_partial_request(ServiceProcess& service) {
+  RawConnection partial(service.port());
+  if (!partial.connected() ||
+      !partial.send_all(post_head("/v1/roughness/groove-wall", kPartialBody + 1024) +
+                        std::string(kPartialBody, ' '))) {
+    return std::nullopt;
+  }
+  return until_gauge(service, "cutcalc_http_connection_buffer_bytes",
+                     [](std::uint64_t bytes) { return bytes >= kPartialBody; });
 }
 
 TEST(Restart, IdleKeepAliveConnectionAtSigtermGetsAFullAnswerWithConnectionClose) {
@@ -135,7 +174,11 @@ TEST(Restart, IdleKeepAliveConnectionAtSigtermGetsAFullAnswerWithConnectionClose
   ASSERT_NE(first.responses.back().header("connection"), "close") << "not kept alive";
 
   service.signal(SIGTERM);
-  ASSERT_TRUE(until_readyz_503(service.port())) << "/readyz never said 503 after SIGTERM";
+  ASSERT_TRUE(until_readyz_503(service)) << "/readyz never said 503 after SIGTERM";
+  // Not before the event loops have looked at their idle connections in the drain (they close
+  // idle ones in their sweep once it is time).
+  const auto swept = until_a_sweep_counts_a_partial_request(service);
+  ASSERT_TRUE(swept && *swept >= kPartialBody) << "no sweep seen during the lame duck";
   // The connection has been idle since before the signal; a proxy now sends on it.
   ASSERT_TRUE(idle.send_all(request));
   const LastAnswer answer = read_last_answer(idle);
@@ -156,7 +199,7 @@ TEST(Restart, ReadyzOnANewConnectionDuringTheDrainIs503) {
   EXPECT_EQ(before->status, 200);
 
   service.signal(SIGTERM);
-  const auto readyz = until_readyz_503(service.port());
+  const auto readyz = until_readyz_503(service);
   ASSERT_TRUE(readyz) << "/readyz never said 503 on a new connection after SIGTERM";
   EXPECT_EQ(readyz->header("content-type").rfind("application/problem+json", 0), 0U)
       << readyz->header("content-type");
@@ -214,6 +257,7 @@ TEST(Restart, SigtermWithRequestsInFlightExitsZeroAfterAnsweringThem) {
     ASSERT_EQ(probe->status, 200);
 
     service.signal(SIGTERM);
+    ASSERT_TRUE(until_draining(service)) << "SIGTERM not taken in";
     for (InFlight& flight : in_flight) ASSERT_TRUE(flight.connection->send_all(flight.rest));
     for (std::size_t i = 0; i < in_flight.size(); ++i) {
       const LastAnswer answer = read_last_answer(*in_flight[i].connection);
@@ -250,29 +294,21 @@ TEST(IdleConnections, HoldNoBuffers) {
     ASSERT_NE(parsed.responses.back().header("connection"), "close") << i;
   }
 
-  // A request being received holds its buffer: a head and most of a body that is still coming,
-  // more than the metrics request's own connection could hold. Seeing it also tells that the
-  // gauge has been summed since the idle connections were answered (it is as of the last sweep).
-  constexpr std::size_t kPartialBody = 48 * 1024;
-  auto partial = std::make_unique<RawConnection>(port);
-  ASSERT_TRUE(partial->connected());
-  ASSERT_TRUE(partial->send_all(post_head("/v1/roughness/groove-wall", kPartialBody + 1024) +
-                                std::string(kPartialBody, ' ')));
-  const auto busy = until_gauge(port, "cutcalc_http_connection_buffer_bytes",
-                                [](std::uint64_t bytes) { return bytes >= kPartialBody; });
+  // A request being received holds its buffer. Seeing it counted also tells that the gauge has
+  // been summed since the idle connections were answered.
+  const auto busy = until_a_sweep_counts_a_partial_request(service);
   ASSERT_TRUE(busy) << "no cutcalc_http_connection_buffer_bytes in /metrics";
   ASSERT_GE(*busy, kPartialBody) << "a connection receiving a request holds no buffer";
-  partial.reset();
 
   // Then well below what 50 connections holding a 16 KiB read buffer each would; the connection
   // of the metrics request itself may hold one.
   constexpr std::uint64_t kSmall = kIdle * 1024;
-  const auto at_rest = until_gauge(port, "cutcalc_http_connection_buffer_bytes",
+  const auto at_rest = until_gauge(service, "cutcalc_http_connection_buffer_bytes",
                                    [](std::uint64_t bytes) { return bytes < kSmall; });
   ASSERT_TRUE(at_rest);
   EXPECT_LT(*at_rest, kSmall) << "idle keep-alive connections still hold their buffers";
   const auto open =
-      until_gauge(port, "cutcalc_http_open_connections", [](std::uint64_t) { return true; });
+      until_gauge(service, "cutcalc_http_open_connections", [](std::uint64_t) { return true; });
   ASSERT_TRUE(open);
   EXPECT_GE(*open, kIdle) << "the idle connections were closed, not emptied";
 }
