@@ -23,6 +23,9 @@ constexpr std::array kSettings = {
     Setting{"--calculation-threads", "CUTCALC_CALCULATION_THREADS"},
     Setting{"--calculation-queue", "CUTCALC_CALCULATION_QUEUE"},
     Setting{"--reuse-port", "CUTCALC_REUSE_PORT"},
+    Setting{"--keep-alive-timeout-s", "CUTCALC_KEEP_ALIVE_TIMEOUT_S"},
+    Setting{"--lame-duck-ms", "CUTCALC_LAME_DUCK_MS"},
+    Setting{"--max-connections", "CUTCALC_MAX_CONNECTIONS"},
 };
 
 // A flag that may stand alone, meaning "on".
@@ -89,6 +92,24 @@ std::string apply(Config& config, std::string_view flag, const std::string& valu
       return "--calculation-queue must be an integer 1..100000, got '" + value + "'";
     }
     config.http.calculation_queue_limit = static_cast<std::size_t>(*queue);
+  } else if (flag == "--keep-alive-timeout-s") {
+    const auto seconds = parse_long(value, 1, 3600);
+    if (!seconds) {
+      return "--keep-alive-timeout-s must be an integer 1..3600, got '" + value + "'";
+    }
+    config.http.limits.keep_alive_timeout = std::chrono::seconds(*seconds);
+  } else if (flag == "--lame-duck-ms") {
+    const auto ms = parse_long(value, 0, 600000);
+    if (!ms) {
+      return "--lame-duck-ms must be an integer 0..600000, got '" + value + "'";
+    }
+    config.http.limits.lame_duck = std::chrono::milliseconds(*ms);
+  } else if (flag == "--max-connections") {
+    const auto connections = parse_long(value, 1, 1000000);
+    if (!connections) {
+      return "--max-connections must be an integer 1..1000000, got '" + value + "'";
+    }
+    config.http.max_connections = static_cast<std::size_t>(*connections);
   } else if (flag == kSwitch) {
     if (value == "on" || value == "true" || value == "1") {
       config.http.reuse_port = true;
@@ -115,7 +136,8 @@ std::string usage() {
   return std::string(
       "usage: cutcalc [--host H] [--port P] [--threads N] [--log-level L] [--log-format F]\n"
       "               [--cors-origin ORIGIN ...] [--calculation-threads N]\n"
-      "               [--calculation-queue N] [--reuse-port]\n"
+      "               [--calculation-queue N] [--reuse-port] [--keep-alive-timeout-s S]\n"
+      "               [--lame-duck-ms MS] [--max-connections N]\n"
       "  --host H        address to listen on (default 127.0.0.1; env CUTCALC_HOST)\n"
       "  --port P        TCP port, 0 = any free port (default 8080; env CUTCALC_PORT)\n"
       "  --threads N     event-loop threads serving connections and requests\n"
@@ -136,6 +158,18 @@ std::string usage() {
       "; env CUTCALC_CALCULATION_QUEUE)\n"
       "  --reuse-port    share the port with other processes (SO_REUSEPORT); without\n"
       "                  it a port in use is an error (env CUTCALC_REUSE_PORT=on|off)\n"
+      "  --keep-alive-timeout-s S  an idle keep-alive connection closes after S s\n"
+      "                  (default " +
+      std::to_string(HttpLimits{}.keep_alive_timeout.count()) +
+      ", above proxies' 60 s; env CUTCALC_KEEP_ALIVE_TIMEOUT_S)\n"
+      "  --lame-duck-ms MS  at SIGTERM, /readyz answers 503 and the port stays open this\n"
+      "                  long, every answer saying Connection: close, before the\n"
+      "                  listener closes (default " +
+      std::to_string(HttpLimits{}.lame_duck.count()) +
+      "; env CUTCALC_LAME_DUCK_MS)\n"
+      "  --max-connections N  open connections at most, beyond: 503 (default: what the\n"
+      "                  cgroup memory limit holds, and the descriptor limit;\n"
+      "                  env CUTCALC_MAX_CONNECTIONS)\n"
       "  --routes        print the calculation endpoints as JSON and exit (for the tools)\n"
       "  --help, --version\n");
 }

@@ -49,6 +49,21 @@ std::string own_cgroup(const std::filesystem::path& self_cgroup) {
 
 }  // namespace
 
+std::optional<std::uint64_t> read_memory_limit(const std::filesystem::path& cgroup_root,
+                                               const std::filesystem::path& self_cgroup) {
+  std::optional<std::uint64_t> limit;
+  std::filesystem::path relative = std::filesystem::path(own_cgroup(self_cgroup)).relative_path();
+  while (true) {
+    const std::string line = first_line(cgroup_root / relative / "memory.max");
+    std::uint64_t bytes = 0;
+    const auto [end, error] = std::from_chars(line.data(), line.data() + line.size(), bytes);
+    if (error == std::errc() && end != line.data()) limit = std::min(limit.value_or(bytes), bytes);
+    if (relative.empty()) break;
+    relative = relative.parent_path();
+  }
+  return limit;
+}
+
 std::optional<double> parse_cpu_max(std::string_view line) {
   while (!line.empty() && (line.back() == '\n' || line.back() == ' ')) line.remove_suffix(1);
   const auto space = line.find(' ');

@@ -4,6 +4,7 @@
 // cgroup and every ancestor. The event loops are sized from it, not from the host's core count.
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -26,6 +27,12 @@ std::optional<double> parse_cpu_max(std::string_view line);
 // so that tests can point them at a fake tree.
 CpuBudget read_cpu_budget(const std::filesystem::path& cgroup_root = "/sys/fs/cgroup",
                           const std::filesystem::path& self_cgroup = "/proc/self/cgroup");
+
+// The tightest cgroup v2 `memory.max` of this process's cgroup and its ancestors, bytes; nullopt
+// when none is set ("max") or there is no cgroup v2. Same parameters as read_cpu_budget().
+std::optional<std::uint64_t> read_memory_limit(
+    const std::filesystem::path& cgroup_root = "/sys/fs/cgroup",
+    const std::filesystem::path& self_cgroup = "/proc/self/cgroup");
 
 // "2 CPUs (affinity 64, cgroup quota 1.5)": for the log line at start.
 std::string describe(const CpuBudget& budget);

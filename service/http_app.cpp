@@ -144,7 +144,12 @@ HttpApp::HttpApp(Config config) : config_(std::move(config)), cors_(config_.cors
       event_loop_settings(config_.http),
       [this](const HttpRequest& request) { return answer(request); },
       [this](const EngineError& error) { return engine_error_response(error); },
-      [this] { return listener_.stopped(); }, counters_);
+      [this] {
+        return listener_.stopped() ? ServerPhase::stopped
+               : draining_.load()  ? ServerPhase::draining
+                                   : ServerPhase::serving;
+      },
+      counters_);
 }
 
 HttpApp::~HttpApp() = default;
@@ -166,7 +171,7 @@ bool HttpApp::serve() {
 
 void HttpApp::shutdown() {
   draining_.store(true);
-  listener_.stop();
+  listener_.stop(config_.http.limits.lame_duck);
 }
 
 void HttpApp::serve_connection(int sock) { engine_->adopt(sock); }

@@ -30,7 +30,9 @@ class HttpApp {
   [[nodiscard]] const std::string& bind_error() const { return listener_.error(); }
   // Serves until shutdown() is called; returns after in-flight requests have been answered.
   bool serve();
-  // Thread-safe: readiness turns 503, the listener closes, in-flight requests finish.
+  // Thread-safe: /readyz turns 503 and every response says Connection: close at once; the listener
+  // accepts for the lame-duck period more, then closes; then idle connections close after a short
+  // grace and in-flight requests finish (README.md, "Restarts").
   void shutdown();
   // Serves a connected stream socket as if it had been accepted (takes ownership); for the
   // byte-level fuzzer, which talks to the engine over a socketpair.

@@ -40,6 +40,9 @@ struct ConnectionCounters {
   std::atomic<std::uint64_t> rejected_at_cap{0};    // 503: max_connections open
   std::atomic<std::uint64_t> epoll_failures{0};     // epoll_ctl refused; the connection closed
   WorkPoolCounters calculations;                    // the calculation pool
+  // Bytes the open connections hold in their buffers, as of the loops' last sweep (gauge): an idle
+  // connection gives its buffers back, so this is about the connections busy now.
+  std::atomic<std::uint64_t> buffer_bytes{0};
 };
 
 }  // namespace cutcalc::service

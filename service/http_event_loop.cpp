@@ -1,5 +1,6 @@
 #include "service/http_event_loop.h"
 
+#include <malloc.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/epoll.h>
@@ -30,6 +31,7 @@ constexpr milliseconds kSweepInterval{200};
 // Buffers of an idle connection above this size are given back.
 constexpr std::size_t kIdleBufferBytes = 16 * 1024;
 constexpr std::size_t kReadChunk = 16 * 1024;
+constexpr std::uint64_t kTrimAfterReleasedBytes = 4 * 1024 * 1024;
 constexpr char kContinue[] = "HTTP/1.1 100 Continue\r\n\r\n";
 
 // Counts a connection as open from its first member's construction to its last member's
@@ -93,7 +95,24 @@ struct EventLoopEngine::Connection {
   ConnectionAfter awaited_after = ConnectionAfter::close;  // of that request
   std::uint32_t events = 0;                                // the epoll interest registered
   Clock::time_point request_deadline{};                    // of the request being received
-  Clock::time_point deadline{};  // of whatever the connection waits for now
+  Clock::time_point deadline{};    // of whatever the connection waits for now
+  Clock::time_point idle_since{};  // when its last response was sent
+
+  // Gives back the buffers of an idle connection (a few KiB of its own each; thousands of idle
+  // keep-alive connections must cost little).
+  void release_buffers() {
+    std::vector<char>().swap(input);
+    input_begin = input_end = 0;
+    std::string().swap(output);
+    output_offset = 0;
+    std::vector<HeaderField>().swap(fields);
+    std::string().swap(decoded_body);
+    std::string().swap(path_scratch);
+  }
+  [[nodiscard]] std::uint64_t held_bytes() const {
+    return input.capacity() + output.capacity() + fields.capacity() * sizeof(HeaderField) +
+           decoded_body.capacity() + path_scratch.capacity();
+  }
 };
 
 // A response computed on the pool, addressed to the connection that asked for it.
@@ -186,7 +205,7 @@ class EventLoopEngine::Loop {
       }
       if (woken && !take_inbox()) return close_all();
       const auto now = Clock::now();
-      if (now >= next_sweep || (engine_.stopping_() && !table_.empty())) {
+      if (now >= next_sweep || (engine_.phase_() == ServerPhase::stopped && !table_.empty())) {
         sweep(now);
         next_sweep = now + kSweepInterval;
       }
@@ -210,7 +229,9 @@ class EventLoopEngine::Loop {
       if (it == table_.end() || it->second->id != done.connection_id) continue;  // closed meanwhile
       Connection& connection = *it->second;
       connection.awaiting = false;
-      if (engine_.stopping_()) connection.awaited_after = ConnectionAfter::close;
+      if (engine_.phase_() != ServerPhase::serving) {
+        connection.awaited_after = ConnectionAfter::close;
+      }
       if (connection.awaited_after == ConnectionAfter::close) connection.last_response = true;
       write_response(done.response, connection.awaited_head_only, connection.awaited_after,
                      connection.output);
@@ -224,7 +245,8 @@ class EventLoopEngine::Loop {
       const int fd = owned->fd.get();
       Connection& connection = *owned;
       table_.emplace(fd, std::move(owned));
-      connection.deadline = Clock::now() + engine_.settings_.limits.keep_alive_timeout;
+      connection.idle_since = Clock::now();
+      connection.deadline = connection.idle_since + engine_.settings_.limits.keep_alive_timeout;
       if (!watch(connection, EPOLLIN, EPOLL_CTL_ADD)) close(fd);
     }
     return true;
@@ -353,7 +375,7 @@ class EventLoopEngine::Loop {
     if (connection.in_request) {
       connection.deadline = connection.request_deadline;
     } else {
-      if (engine_.stopping_()) return close(fd);
+      connection.idle_since = now;
       connection.deadline = now + engine_.settings_.limits.keep_alive_timeout;
       if (connection.input.size() > kIdleBufferBytes) std::vector<char>().swap(connection.input);
       if (connection.output.capacity() > kIdleBufferBytes) std::string().swap(connection.output);
@@ -389,8 +411,8 @@ class EventLoopEngine::Loop {
                                            connection.decoded_body, connection.path_scratch);
       request.addresses = &connection.addresses;
       const bool head_only = request.method == "HEAD";
-      const bool keep_alive =
-          request.wants_keep_alive() && connection.requests_left > 1 && !engine_.stopping_();
+      const bool keep_alive = request.wants_keep_alive() && connection.requests_left > 1 &&
+                              engine_.phase_() == ServerPhase::serving;
       const ConnectionAfter after = !keep_alive      ? ConnectionAfter::close
                                     : request.http11 ? ConnectionAfter::keep_alive
                                                      : ConnectionAfter::keep_alive_http10;
@@ -466,7 +488,7 @@ class EventLoopEngine::Loop {
   // it closes or the linger time passes.
   void linger(Connection& connection, Clock::time_point now) {
     const int fd = connection.fd.get();
-    if (connection.peer_eof || engine_.stopping_()) return close(fd);
+    if (connection.peer_eof || engine_.phase_() == ServerPhase::stopped) return close(fd);
     ::shutdown(fd, SHUT_WR);
     connection.lingering = true;
     connection.in_request = false;
@@ -486,25 +508,42 @@ class EventLoopEngine::Loop {
   }
 
   void sweep(Clock::time_point now) {
-    const bool stopping = engine_.stopping_();
+    const bool stopped = engine_.phase_() == ServerPhase::stopped;
+    const auto grace = engine_.settings_.limits.drain_idle_grace;
     std::vector<int> expired;
     std::vector<int> idle_at_stop;
+    std::uint64_t held = 0;
+    std::uint64_t released = 0;
     for (const auto& [fd, connection] : table_) {
+      const bool idle = !connection->in_request && !connection->awaiting &&
+                        !connection->has_output() && !connection->lingering &&
+                        connection->unread().empty();
+      if (idle && now - connection->idle_since >= kSweepInterval) {
+        released += connection->held_bytes();
+        connection->release_buffers();
+      }
+      held += connection->held_bytes();
       if (now >= connection->deadline) {
         if (connection->in_request) {
           engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
         }
         expired.push_back(fd);
-      } else if (stopping &&
-                 (connection->lingering || (!connection->in_request && !connection->awaiting &&
-                                            !connection->has_output()))) {
+      } else if (stopped &&
+                 (connection->lingering || (idle && now - connection->idle_since >= grace))) {
         idle_at_stop.push_back(fd);
       }
     }
+    engine_.counters_.buffer_bytes.fetch_add(held - reported_buffer_bytes_,
+                                             std::memory_order_relaxed);
+    reported_buffer_bytes_ = held;
+    // Hand what thousands of connections gave back to the system too (glibc keeps freed heap
+    // otherwise, and the process's memory is what a container limit counts).
+    if (released >= kTrimAfterReleasedBytes) ::malloc_trim(0);
     for (const int fd : expired) close(fd);
-    // Stopping closes idle and lingering connections; a request in flight keeps its connection
-    // until it is answered (the response then says Connection: close) or its deadline passes.
-    // A connection whose first bytes are in the socket but not yet read is in flight too.
+    // Once the listener is closed, idle connections close after the drain grace (one that brings a
+    // request meanwhile is answered with Connection: close) and lingering ones at once; a request
+    // in flight keeps its connection until it is answered or its deadline passes. A connection
+    // whose first bytes are in the socket but not yet read is in flight too.
     for (const int fd : idle_at_stop) {
       const auto it = table_.find(fd);
       if (it == table_.end()) continue;
@@ -525,15 +564,16 @@ class EventLoopEngine::Loop {
   std::vector<Completion> completions_;                         // guarded by inbox_mutex_
   bool quit_ = false;                                           // guarded by inbox_mutex_
   std::unordered_map<int, std::unique_ptr<Connection>> table_;  // loop thread only
+  std::uint64_t reported_buffer_bytes_ = 0;  // this loop's share of counters_.buffer_bytes
   std::thread thread_;
 };
 
 EventLoopEngine::EventLoopEngine(EventLoopSettings settings, Serve serve, RenderError render_error,
-                                 Stopping stopping, ConnectionCounters& counters)
+                                 PhaseOf phase, ConnectionCounters& counters)
     : settings_(std::move(settings)),
       serve_(std::move(serve)),
       render_error_(std::move(render_error)),
-      stopping_(std::move(stopping)),
+      phase_(std::move(phase)),
       counters_(counters) {
   const std::size_t loops = std::max<std::size_t>(settings_.loops, 1);
   for (std::size_t i = 0; i < loops; ++i) loops_.push_back(std::make_unique<Loop>(*this));

@@ -62,6 +62,13 @@ struct EngineError {
   std::string_view origin;  // the request's Origin field; empty when it was not read
 };
 
+// Where the server is in its life (README.md, "Restarts"):
+enum class ServerPhase {
+  serving,   // keep-alive as usual
+  draining,  // SIGTERM, lame duck: the listener accepts still; every response says close
+  stopped    // the listener is closed: idle connections close after the drain grace
+};
+
 // Work the app hands to the calculation pool instead of answering on the loop.
 struct DeferredResponse {
   // Runs on a pool thread; owns copies of everything it reads (the request's views die with the
@@ -81,11 +88,11 @@ class EventLoopEngine {
   // The whole response (status line to body) for an engine error; it must say Connection: close.
   // Called on a loop thread or the accept thread.
   using RenderError = std::function<std::string(const EngineError& error)>;
-  // True once the server has been stopped: idle connections close, responses say close.
-  using Stopping = std::function<bool()>;
+  // Where the server is in its life; called on the loop threads.
+  using PhaseOf = std::function<ServerPhase()>;
 
-  EventLoopEngine(EventLoopSettings settings, Serve serve, RenderError render_error,
-                  Stopping stopping, ConnectionCounters& counters);
+  EventLoopEngine(EventLoopSettings settings, Serve serve, RenderError render_error, PhaseOf phase,
+                  ConnectionCounters& counters);
   EventLoopEngine(const EventLoopEngine&) = delete;
   EventLoopEngine& operator=(const EventLoopEngine&) = delete;
   // Finishes the pool's work, then closes every connection and joins the loops.
@@ -108,7 +115,7 @@ class EventLoopEngine {
   const EventLoopSettings settings_;
   const Serve serve_;
   const RenderError render_error_;
-  const Stopping stopping_;
+  const PhaseOf phase_;
   ConnectionCounters& counters_;
   std::atomic<std::size_t> open_connections_{0};  // adopted and not yet closed
   std::atomic<std::size_t> next_loop_{0};

@@ -15,7 +15,17 @@ struct HttpLimits {
   // One line of the head at most (the request line; a field line).
   std::size_t max_request_line_bytes = 8192;
   std::size_t max_field_line_bytes = 8192;
-  std::chrono::seconds keep_alive_timeout{5};  // an idle keep-alive connection is closed after it
+  // An idle keep-alive connection is closed after it: above the idle timeouts of the usual proxies
+  // and load balancers (nginx's upstream keepalive_timeout and cloud load balancers: 60 s), so
+  // that a proxy never reuses a connection in the instant cutcalc closes it.
+  std::chrono::seconds keep_alive_timeout{75};
+  // At SIGTERM: how long /readyz answers 503 while the listener still accepts and every response
+  // says Connection: close (a health checker polling every 1 s marks the instance down after 2
+  // failures, with a margin), before the listener closes.
+  std::chrono::milliseconds lame_duck{3000};
+  // After the listener has closed: how long a keep-alive connection that has been idle since
+  // before may still bring one more request (answered with Connection: close).
+  std::chrono::milliseconds drain_idle_grace{1000};
   // A whole request (head + body) from its first byte; 0: none. Also how long a shutdown waits
   // for the requests in flight (at least 1 s).
   std::chrono::milliseconds request_timeout{10000};

@@ -21,15 +21,27 @@ std::size_t effective_event_loop_threads(const HttpTuning& tuning) {
   return read_cpu_budget().usable_cpus;
 }
 
-std::size_t effective_max_connections(const HttpTuning& tuning) {
+std::size_t effective_max_connections(const HttpTuning& tuning,
+                                      std::optional<std::uint64_t> memory_limit_bytes) {
   if (tuning.max_connections > 0) return tuning.max_connections;
+  std::size_t cap = kMaxConnectionsCap;
   rlimit limit{};
-  if (::getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) {
-    return kMaxConnectionsCap;
+  if (::getrlimit(RLIMIT_NOFILE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    const auto soft = static_cast<std::size_t>(limit.rlim_cur);
+    cap = std::min(cap, soft - std::min(soft, kReservedDescriptors));
   }
-  const auto soft = static_cast<std::size_t>(limit.rlim_cur);
-  return std::clamp(soft - std::min(soft, kReservedDescriptors), std::size_t{1},
-                    kMaxConnectionsCap);
+  if (memory_limit_bytes) {
+    const std::uint64_t usable =
+        *memory_limit_bytes -
+        std::min<std::uint64_t>(*memory_limit_bytes, tuning.reserved_memory_bytes);
+    cap = std::min<std::uint64_t>(
+        cap, usable / std::max<std::size_t>(tuning.connection_memory_bytes, 1));
+  }
+  return std::max<std::size_t>(cap, 1);
+}
+
+std::size_t effective_max_connections(const HttpTuning& tuning) {
+  return effective_max_connections(tuning, read_memory_limit());
 }
 
 EventLoopSettings event_loop_settings(const HttpTuning& tuning) {

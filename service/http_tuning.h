@@ -19,6 +19,8 @@
 //    12.7 us per request (issue 14's profile): the engine parses once.
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 #include "service/http_event_loop.h"
 #include "service/http_limits.h"
@@ -31,7 +33,12 @@ struct HttpTuning {
   std::size_t calculation_queue_limit = 16;     // calculations waiting for a thread; beyond: 503
   std::size_t keep_alive_max_requests = 10000;  // requests per keep-alive connection
   HttpLimits limits;
-  std::size_t max_connections = 0;  // beyond: 503; 0: from the descriptor limit
+  std::size_t max_connections = 0;  // beyond: 503; 0: from the memory and descriptor limits
+  // What one open connection is budgeted against the memory limit (an idle one costs a few KiB of
+  // kernel and engine state; a busy one its buffers), and what the memory limit keeps back for
+  // everything else (the calculations' programs, the page, the allocator).
+  std::size_t connection_memory_bytes = 16 * 1024;
+  std::size_t reserved_memory_bytes = 96 * 1024 * 1024;
   int listen_backlog = 1024;
   bool reuse_port = false;  // SO_REUSEPORT: let other processes listen on the same port
   bool tcp_nodelay = true;
@@ -39,9 +46,13 @@ struct HttpTuning {
 
 // Event loop threads for `tuning` on this machine (resolves event_loop_threads == 0).
 std::size_t effective_event_loop_threads(const HttpTuning& tuning);
-// Open connections allowed (resolves max_connections == 0: the soft RLIMIT_NOFILE less a reserve
-// for the listener, logs and the like, at most 65536).
-std::size_t effective_max_connections(const HttpTuning& tuning);
+// Open connections allowed. max_connections == 0 resolves to the smaller of what the memory limit
+// (the cgroup's memory.max, `memory_limit_bytes`; none: no bound) holds at connection_memory_bytes
+// each after the reserve, and the soft RLIMIT_NOFILE less a reserve for the listener, logs and the
+// like; at most 65536, at least 1. So at the cap a new connection gets 503, never an OOM kill.
+std::size_t effective_max_connections(const HttpTuning& tuning,
+                                      std::optional<std::uint64_t> memory_limit_bytes);
+std::size_t effective_max_connections(const HttpTuning& tuning);  // this process's memory limit
 // The engine's settings for `tuning` on this machine.
 EventLoopSettings event_loop_settings(const HttpTuning& tuning);
 

@@ -71,11 +71,26 @@ int Listener::open(const ListenSettings& settings) {
 }
 
 bool Listener::run(const std::function<void(int sock)>& adopt) {
-  if (!socket_.valid() || !wake_.valid()) return false;
+  if (!socket_.valid() || !wake_.valid()) {
+    closed_.store(true);
+    return false;
+  }
+  using Clock = std::chrono::steady_clock;
   std::array<pollfd, 2> watched{pollfd{socket_.get(), POLLIN, 0}, pollfd{wake_.get(), POLLIN, 0}};
-  while (!stopped_.load()) {
-    if (::poll(watched.data(), watched.size(), -1) < 0 && errno != EINTR) break;
-    if (stopped_.load()) break;
+  for (;;) {
+    const std::int64_t stop_at = stop_at_ns_.load();
+    const std::int64_t now =
+        std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch())
+            .count();
+    if (stop_at <= now) break;
+    // Once a stop is set the wake-up has done its job (it stays readable): the listener alone,
+    // until the stop time.
+    const bool stopping = stop_at != INT64_MAX;
+    const int timeout_ms =
+        stopping ? static_cast<int>(std::min<std::int64_t>((stop_at - now) / 1000000 + 1, 1000))
+                 : -1;
+    if (::poll(watched.data(), stopping ? 1 : 2, timeout_ms) < 0 && errno != EINTR) break;
+    if ((watched[0].revents & POLLIN) == 0) continue;
     for (;;) {
       const int sock = ::accept4(socket_.get(), nullptr, nullptr, SOCK_CLOEXEC);
       if (sock >= 0) {
@@ -92,15 +107,19 @@ bool Listener::run(const std::function<void(int sock)>& adopt) {
     }
   }
   socket_.reset();
+  closed_.store(true);
   return true;
 }
 
-void Listener::stop() {
-  // The wake-up first: once run() sees `stopped_`, its caller may destroy this listener and its
-  // descriptors, so stop() must not touch them after the store.
+void Listener::stop(std::chrono::milliseconds delay) {
+  if (stop_requested_.exchange(true)) return;
+  // The wake-up first: once run() sees the stop time, its caller may destroy this listener and
+  // its descriptors, so stop() must not touch them after the store.
   const std::uint64_t one = 1;
   [[maybe_unused]] const auto n = ::write(wake_.get(), &one, sizeof(one));
-  stopped_.store(true);
+  const auto at = std::chrono::steady_clock::now() + delay;
+  stop_at_ns_.store(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(at.time_since_epoch()).count());
 }
 
 }  // namespace cutcalc::service

@@ -5,6 +5,8 @@
 // processes (SO_REUSEPORT) happens only when asked for (--reuse-port).
 
 #include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -30,17 +32,21 @@ class Listener {
   [[nodiscard]] const std::string& error() const { return error_; }
 
   // Accepts connections and hands each one's descriptor to `adopt` (which takes ownership) until
-  // stop(); then closes the listening socket, so new connections are refused. False when it could
-  // not run (not open).
+  // the time stop() set; then closes the listening socket, so new connections are refused. False
+  // when it could not run (not open).
   bool run(const std::function<void(int sock)>& adopt);
-  // Thread-safe; makes run() return.
-  void stop();
-  [[nodiscard]] bool stopped() const { return stopped_.load(); }
+  // Thread-safe, once: run() goes on accepting for `delay` (the lame duck), then returns.
+  void stop(std::chrono::milliseconds delay = {});
+  // True once the listening socket is closed (or stop() came before run()).
+  [[nodiscard]] bool stopped() const { return closed_.load(); }
 
  private:
   UniqueFd socket_;
   UniqueFd wake_;  // eventfd: stop() wakes run()
-  std::atomic<bool> stopped_{false};
+  std::atomic<bool> stop_requested_{false};
+  // When run() stops accepting, steady-clock nanoseconds; max: not asked yet.
+  std::atomic<std::int64_t> stop_at_ns_{INT64_MAX};
+  std::atomic<bool> closed_{false};
   std::string error_;
 };
 

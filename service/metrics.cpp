@@ -115,6 +115,11 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
          "# TYPE cutcalc_calculation_pool_running gauge\n"
          "cutcalc_calculation_pool_running "
       << counters.calculations.running.load() << '\n';
+  out << "# HELP cutcalc_http_connection_buffer_bytes Bytes the open connections hold in their "
+         "buffers (as of the event loops' last sweep; idle connections hold none).\n"
+         "# TYPE cutcalc_http_connection_buffer_bytes gauge\n"
+         "cutcalc_http_connection_buffer_bytes "
+      << counters.buffer_bytes.load() << '\n';
   out << "# HELP cutcalc_http_open_connections Connections open now.\n"
          "# TYPE cutcalc_http_open_connections gauge\n"
          "cutcalc_http_open_connections "

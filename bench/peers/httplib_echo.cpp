@@ -106,7 +106,8 @@ int serve_with_engine(const Options& options, sigset_t stop_signals) {
         response.set_content(std::string(error.detail), "text/plain");
         return closing_response(response);
       },
-      [&listener] { return listener.stopped(); }, counters);
+      [&listener] { return listener.stopped() ? ServerPhase::stopped : ServerPhase::serving; },
+      counters);
   std::thread stopper([&listener, stop_signals] {
     int signal_number = 0;
     sigwait(&stop_signals, &signal_number);

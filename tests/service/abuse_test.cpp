@@ -3,8 +3,9 @@
 // IdleAndSlowlorisClientsDoNotStarveOthers: with 300 idle keep-alive connections (each made one
 // request) and 50 slowloris connections (a request head sent one byte a second) open at once,
 // requests on fresh connections are answered 200 within 1 s each; the idle connections are then
-// closed by the keep-alive timeout (5 s), the slowloris ones by the request deadline (10 s from
-// their first byte), and the server still answers within 1 s afterwards.
+// closed by the keep-alive timeout (5 s here, 75 s by default), the slowloris ones by the
+// request deadline (10 s from their first byte), and the server still answers within 1 s
+// afterwards.
 //
 // SigtermWith50RequestsInFlight...: SIGTERM while 50 requests are in flight: all 50 are answered
 // 200, the process exits 0.
@@ -293,7 +294,7 @@ class Slowloris {
 TEST(Abuse, IdleAndSlowlorisClientsDoNotStarveOthers) {
   const std::string limit_problem = ensure_fd_limit(kIdleConnections + kSlowlorisConnections + 200);
   ASSERT_TRUE(limit_problem.empty()) << limit_problem;
-  ServiceProcess service(CUTCALC_BINARY, {"--log-level", "info"});
+  ServiceProcess service(CUTCALC_BINARY, {"--log-level", "info", "--keep-alive-timeout-s", "5"});
   const int port = service.port();
   std::vector<double> before = expect_prompt_answers(port, 3, milliseconds{0}, "warm-up");
 

@@ -176,7 +176,7 @@ class HeldEngine {
               "HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n"
               "Connection: close\r\n\r\n");
         },
-        [] { return false; }, counters_);
+        [] { return ServerPhase::serving; }, counters_);
   }
   ~HeldEngine() {
     gate_.open();  // the pool finishes its jobs before the engine is gone

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <map>
 #include <string>
 #include <vector>
@@ -135,6 +136,66 @@ TEST(Config, ReusePortRejectsOtherValues) {
   EXPECT_FALSE(env.config);
   EXPECT_EQ(env.exit_code, 2);
   EXPECT_NE(env.message.find("CUTCALC_REUSE_PORT"), std::string::npos) << env.message;
+}
+
+TEST(Config, RestartAndConnectionFlagsSetTheirLimits) {
+  const ConfigOutcome defaults = parse({});
+  ASSERT_TRUE(defaults.config);
+  // Above the usual proxies' 60 s idle timeout; a lame duck a 1 s health check sees twice.
+  EXPECT_EQ(defaults.config->http.limits.keep_alive_timeout, std::chrono::seconds(75));
+  EXPECT_EQ(defaults.config->http.limits.lame_duck, std::chrono::milliseconds(3000));
+  EXPECT_EQ(defaults.config->http.max_connections, 0U);  // from the memory and descriptor limits
+
+  const ConfigOutcome flags =
+      parse({"--keep-alive-timeout-s", "90", "--lame-duck-ms=0", "--max-connections", "2000"});
+  ASSERT_TRUE(flags.config) << flags.message;
+  EXPECT_EQ(flags.config->http.limits.keep_alive_timeout, std::chrono::seconds(90));
+  EXPECT_EQ(flags.config->http.limits.lame_duck, std::chrono::milliseconds(0));
+  EXPECT_EQ(flags.config->http.max_connections, 2000U);
+
+  const ConfigOutcome env = parse({}, {{"CUTCALC_KEEP_ALIVE_TIMEOUT_S", "3600"},
+                                       {"CUTCALC_LAME_DUCK_MS", "600000"},
+                                       {"CUTCALC_MAX_CONNECTIONS", "1000000"}});
+  ASSERT_TRUE(env.config) << env.message;
+  EXPECT_EQ(env.config->http.limits.keep_alive_timeout, std::chrono::seconds(3600));
+  EXPECT_EQ(env.config->http.limits.lame_duck, std::chrono::milliseconds(600000));
+  EXPECT_EQ(env.config->http.max_connections, 1000000U);
+
+  const ConfigOutcome lowest = parse({"--keep-alive-timeout-s", "1", "--max-connections", "1"},
+                                     {{"CUTCALC_LAME_DUCK_MS", "5000"}});
+  ASSERT_TRUE(lowest.config) << lowest.message;
+  EXPECT_EQ(lowest.config->http.limits.keep_alive_timeout, std::chrono::seconds(1));
+  EXPECT_EQ(lowest.config->http.limits.lame_duck, std::chrono::milliseconds(5000));
+  EXPECT_EQ(lowest.config->http.max_connections, 1U);
+
+  const ConfigOutcome overridden =
+      parse({"--lame-duck-ms", "250"}, {{"CUTCALC_LAME_DUCK_MS", "5000"}});
+  ASSERT_TRUE(overridden.config) << overridden.message;
+  EXPECT_EQ(overridden.config->http.limits.lame_duck, std::chrono::milliseconds(250));
+}
+
+TEST(Config, RestartAndConnectionFlagsOutOfRangeExitWithStatus2) {
+  for (const auto& args : std::vector<std::vector<std::string>>{{"--keep-alive-timeout-s", "0"},
+                                                                {"--keep-alive-timeout-s", "3601"},
+                                                                {"--keep-alive-timeout-s", "1.5"},
+                                                                {"--lame-duck-ms", "-1"},
+                                                                {"--lame-duck-ms", "600001"},
+                                                                {"--lame-duck-ms", "soon"},
+                                                                {"--max-connections", "0"},
+                                                                {"--max-connections", "1000001"},
+                                                                {"--max-connections"}}) {
+    const ConfigOutcome outcome = parse(args);
+    EXPECT_FALSE(outcome.config) << args[0] << " " << (args.size() > 1 ? args[1] : "");
+    EXPECT_EQ(outcome.exit_code, 2);
+    EXPECT_NE(outcome.message.find(args[0]), std::string::npos) << outcome.message;
+  }
+  for (const char* name :
+       {"CUTCALC_KEEP_ALIVE_TIMEOUT_S", "CUTCALC_LAME_DUCK_MS", "CUTCALC_MAX_CONNECTIONS"}) {
+    const ConfigOutcome env = parse({}, {{name, "-5"}});
+    EXPECT_FALSE(env.config) << name;
+    EXPECT_EQ(env.exit_code, 2) << name;
+    EXPECT_NE(env.message.find(name), std::string::npos) << env.message;
+  }
 }
 
 TEST(Config, HelpAndVersionExitZero) {

@@ -7,9 +7,11 @@
 #include <sched.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "service/http_tuning.h"
@@ -41,6 +43,12 @@ class FakeCgroup {
   }
   [[nodiscard]] CpuBudget budget() const {
     return read_cpu_budget(root_ / "fs", root_ / "self_cgroup");
+  }
+  void set_memory_max(const std::string& cgroup, const std::string& line) {
+    write_file(root_ / "fs" / cgroup / "memory.max", line + "\n");
+  }
+  [[nodiscard]] std::optional<std::uint64_t> memory_limit() const {
+    return read_memory_limit(root_ / "fs", root_ / "self_cgroup");
   }
 
  private:
@@ -115,6 +123,29 @@ TEST(CpuBudget, AnAffinityMaskOfOneCpuMeansOneEventLoop) {
   HttpTuning explicit_threads;
   explicit_threads.event_loop_threads = 3;  // --threads wins over the budget
   EXPECT_EQ(effective_event_loop_threads(explicit_threads), 3U);
+}
+
+// The connection cap follows the memory limit (issue 24): the same walk up the tree as the quota.
+TEST(MemoryLimit, TheTightestMemoryMaxUpTheTreeWins) {
+  FakeCgroup cgroup;
+  cgroup.set_memory_max("kubepods", "8589934592");        // 8 GiB for all pods
+  cgroup.set_memory_max("kubepods/pod1", "268435456");    // this pod: 256 MiB
+  cgroup.set_memory_max("kubepods/pod1/cutcalc", "max");  // the container: no limit of its own
+  EXPECT_EQ(cgroup.memory_limit(), std::optional<std::uint64_t>(268435456));
+  cgroup.set_memory_max("kubepods/pod1/cutcalc", "134217728");  // tighter below
+  EXPECT_EQ(cgroup.memory_limit(), std::optional<std::uint64_t>(134217728));
+  cgroup.set_memory_max("kubepods", "67108864");  // tighter above
+  EXPECT_EQ(cgroup.memory_limit(), std::optional<std::uint64_t>(67108864));
+}
+
+TEST(MemoryLimit, MaxEverywhereOrNoFileMeansNone) {
+  FakeCgroup cgroup;
+  EXPECT_FALSE(cgroup.memory_limit().has_value());  // no memory.max at all (no cgroup v2)
+  cgroup.set_memory_max("kubepods", "max");
+  cgroup.set_memory_max("kubepods/pod1/cutcalc", "max");
+  EXPECT_FALSE(cgroup.memory_limit().has_value());
+  cgroup.set_memory_max("kubepods/pod1", "");  // unreadable as a number: ignored
+  EXPECT_FALSE(cgroup.memory_limit().has_value());
 }
 
 TEST(CpuBudget, DescriptionNamesTheFigures) {
