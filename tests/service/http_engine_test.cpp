@@ -280,6 +280,7 @@ TEST(HttpEngine, ConnectionsOverTheCapGet503ProblemAndClose) {
   config.port = 0;
   config.log_level = "off";
   config.http.max_connections = 2;
+  config.http.limits.lame_duck = std::chrono::milliseconds{0};
   service::HttpApp app(config);
   const int port = app.bind();
   ASSERT_GT(port, 0);

@@ -1,5 +1,6 @@
 #include "support/test_server.h"
 
+#include <chrono>
 #include <fstream>
 #include <stdexcept>
 
@@ -13,6 +14,10 @@ TestServer::TestServer(std::vector<std::string> cors_origins) {
   config.host = "127.0.0.1";
   config.port = 0;
   config.log_level = "off";
+  // Each test process stops its server at exit: no lame duck and no idle grace to wait out (the
+  // restart tests run the real binary with its defaults).
+  config.http.limits.lame_duck = std::chrono::milliseconds{0};
+  config.http.limits.drain_idle_grace = std::chrono::milliseconds{0};
   app_ = std::make_unique<service::HttpApp>(config);
   port_ = app_->bind();
   if (port_ <= 0) {
