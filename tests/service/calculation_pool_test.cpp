@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "service/http_event_loop.h"
+#include "support/gate.h"
 #include "support/http_responses.h"
 #include "support/test_server.h"
 
@@ -35,32 +36,7 @@ namespace {
 constexpr auto kPatience = std::chrono::seconds(10);
 constexpr int kPatienceMs = 10000;
 
-// Holds the calculations that reach it until opened; counts those inside.
-class Gate {
- public:
-  void pass() {
-    std::unique_lock lock(mutex_);
-    ++inside_;
-    changed_.notify_all();
-    changed_.wait(lock, [this] { return open_; });
-  }
-  void open() {
-    const std::lock_guard lock(mutex_);
-    open_ = true;
-    changed_.notify_all();
-  }
-  // True once `count` calculations have reached the gate.
-  bool wait_inside(int count) {
-    std::unique_lock lock(mutex_);
-    return changed_.wait_for(lock, kPatience, [&] { return inside_ >= count; });
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  int inside_ = 0;
-  bool open_ = false;
-};
+using cutcalc::testing::Gate;
 
 // Waits for `condition` (polled), as a safety net against a hang.
 bool eventually(const std::function<bool()>& condition) {

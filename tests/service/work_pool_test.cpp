@@ -14,37 +14,15 @@
 #include <thread>
 #include <vector>
 
+#include "support/gate.h"
+
 namespace cutcalc::service {
 namespace {
 
 // A safety net against a hang only; no test measures time.
 constexpr auto kPatience = std::chrono::seconds(10);
 
-// Holds the jobs that reach it until opened; counts those inside.
-class Gate {
- public:
-  void pass() {
-    std::unique_lock lock(mutex_);
-    ++inside_;
-    changed_.notify_all();
-    changed_.wait(lock, [this] { return open_; });
-  }
-  void open() {
-    const std::lock_guard lock(mutex_);
-    open_ = true;
-    changed_.notify_all();
-  }
-  bool wait_inside(int count) {
-    std::unique_lock lock(mutex_);
-    return changed_.wait_for(lock, kPatience, [&] { return inside_ >= count; });
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  int inside_ = 0;
-  bool open_ = false;
-};
+using cutcalc::testing::Gate;
 
 // Opens the gate when a test leaves its scope, failed assertions included: a pool joins its
 // threads on destruction, so a thread still held there would hang the test.
