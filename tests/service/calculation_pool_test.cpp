@@ -36,17 +36,8 @@ namespace {
 constexpr auto kPatience = std::chrono::seconds(10);
 constexpr int kPatienceMs = 10000;
 
+using cutcalc::testing::eventually;
 using cutcalc::testing::Gate;
-
-// Waits for `condition` (polled), as a safety net against a hang.
-bool eventually(const std::function<bool()>& condition) {
-  const auto until = std::chrono::steady_clock::now() + kPatience;
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() >= until) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return true;
-}
 
 HttpResponse text(int status, std::string body) {
   HttpResponse response;

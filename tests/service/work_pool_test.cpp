@@ -22,6 +22,7 @@ namespace {
 // A safety net against a hang only; no test measures time.
 constexpr auto kPatience = std::chrono::seconds(10);
 
+using cutcalc::testing::eventually;
 using cutcalc::testing::Gate;
 
 // Opens the gate when a test leaves its scope, failed assertions included: a pool joins its
@@ -30,15 +31,6 @@ struct OpensOnExit {
   Gate& gate;
   ~OpensOnExit() { gate.open(); }
 };
-
-bool eventually(const std::function<bool()>& condition) {
-  const auto until = std::chrono::steady_clock::now() + kPatience;
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() >= until) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return true;
-}
 
 WorkPoolSettings settings(std::size_t threads, std::size_t queue_limit) {
   WorkPoolSettings result;

@@ -5,7 +5,9 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <mutex>
+#include <thread>
 
 namespace cutcalc::testing {
 
@@ -37,5 +39,16 @@ class Gate {
   int inside_ = 0;
   bool open_ = false;
 };
+
+// Polls `condition` until it holds (true) or Gate::kPatience passes (false): a safety net against
+// a hang, not a measurement.
+inline bool eventually(const std::function<bool()>& condition) {
+  const auto until = std::chrono::steady_clock::now() + Gate::kPatience;
+  while (!condition()) {
+    if (std::chrono::steady_clock::now() >= until) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return true;
+}
 
 }  // namespace cutcalc::testing
