@@ -19,9 +19,6 @@
 namespace cutcalc::service {
 namespace {
 
-// A safety net against a hang only; no test measures time.
-constexpr auto kPatience = std::chrono::seconds(10);
-
 using cutcalc::testing::eventually;
 using cutcalc::testing::Gate;
 
