@@ -209,6 +209,47 @@ constexpr std::array kCatalogue{
           "задайте хотя бы одно из {fields}"},
     Entry{ErrorCode::needs_several_flats, "is only defined for two or more flats (flats >= 2)",
           "определено только для двух и более лысок (flats >= 2)"},
+    Entry{ErrorCode::gcode_parameter,
+          "line {line}, column {column}: {word}: a parameter is known only when the program "
+          "runs, so the program cannot be timed",
+          "строка {line}, позиция {column}: {word}: значение параметра известно только при "
+          "выполнении программы, время не рассчитать"},
+    Entry{ErrorCode::gcode_expression,
+          "line {line}, column {column}: {word}: expressions cannot be timed",
+          "строка {line}, позиция {column}: {word}: выражения не поддерживаются при расчёте "
+          "времени"},
+    Entry{ErrorCode::gcode_subroutine,
+          "line {line}, column {column}: {word}: subroutines, calls and loops cannot be timed",
+          "строка {line}, позиция {column}: {word}: подпрограммы, вызовы и циклы не "
+          "поддерживаются при расчёте времени"},
+    Entry{ErrorCode::gcode_cutter_compensation,
+          "line {line}, column {column}: {word}: with cutter compensation on the path depends "
+          "on the tool, so it cannot be timed",
+          "строка {line}, позиция {column}: {word}: при коррекции на радиус путь зависит от "
+          "инструмента, время не рассчитать"},
+    Entry{ErrorCode::gcode_canned_cycle,
+          "line {line}, column {column}: {word}: canned cycles cannot be timed",
+          "строка {line}, позиция {column}: {word}: постоянные циклы не поддерживаются при "
+          "расчёте времени"},
+    Entry{ErrorCode::gcode_unsupported_word,
+          "line {line}, column {column}: {word} is not a word the program reader knows",
+          "строка {line}, позиция {column}: слово {word} не поддерживается"},
+    Entry{ErrorCode::gcode_malformed, "line {line}, column {column}: {word} is not a valid word",
+          "строка {line}, позиция {column}: {word} — некорректное слово"},
+    Entry{ErrorCode::gcode_arc_geometry,
+          "line {line}, column {column}: {word}: the arc's end point is not on its circle",
+          "строка {line}, позиция {column}: {word}: конечная точка дуги не лежит на её "
+          "окружности"},
+    Entry{ErrorCode::gcode_missing_feed,
+          "line {line}, column {column}: {word}: a feed move with no feed in effect (F, or a "
+          "turning spindle for feed per revolution)",
+          "строка {line}, позиция {column}: {word}: перемещение на подаче без подачи (F или "
+          "вращение шпинделя при подаче на оборот)"},
+    Entry{ErrorCode::axis_not_described,
+          "the program moves axis {axis} (first at line {line}), which the machine does not "
+          "describe",
+          "программа перемещает ось {axis} (впервые в строке {line}), которой нет в описании "
+          "станка"},
     Entry{ErrorCode::empty_body, "the request body is empty; send a JSON object",
           "тело запроса пустое; отправьте объект JSON"},
     Entry{ErrorCode::duplicate_key, "duplicate key \"{key}\" in an object",
@@ -233,6 +274,9 @@ constexpr std::array kCatalogue{
     Entry{ErrorCode::calculations_busy,
           "the server is busy with other long calculations; retry after {retry_after_s} s",
           "сервер занят другими долгими расчётами; повторите через {retry_after_s} с"},
+    Entry{ErrorCode::uploads_busy,
+          "the server is receiving other large programs; retry after {retry_after_s} s",
+          "сервер принимает другие большие программы; повторите через {retry_after_s} с"},
     Entry{ErrorCode::internal_error, "an internal error occurred (a bug in cutcalc); it was logged",
           "внутренняя ошибка (ошибка в cutcalc); она записана в журнал"},
 };

@@ -33,6 +33,8 @@ nlohmann::json calculation_routes_json() {
     if (route.page_section != kNoPage) {
       row["page_section"] = route.page_section;
     }
+    row["heavy"] = can_be_heavy(route);
+    row["max_body_bytes"] = route.max_body_bytes;  // 0: the service's default
     rows.push_back(std::move(row));
   }
   return rows;

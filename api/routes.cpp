@@ -9,6 +9,7 @@
 #include "api/grooving/grooving_cycle_endpoint.h"
 #include "api/kinematics/resultant_speeds_endpoint.h"
 #include "api/lathe_flat/lathe_flat_endpoint.h"
+#include "api/machine_time/program_time_endpoint.h"
 #include "api/polygon/polygon_hole_endpoint.h"
 #include "api/roughness/bore_milling_endpoint.h"
 #include "api/roughness/groove_wall_endpoint.h"
@@ -65,6 +66,12 @@ std::span<const CalculationRoute> calculation_routes() {
                        .forms = json_and_plain_text_program,
                        .reference_files = {"next/lathe-flat.json"},
                        .page_section = "flat"},
+      CalculationRoute{.path = "/v1/program-time",
+                       .handler = &machine_time::handle_program_time,
+                       .plot = {"profile_points", "200", ""},
+                       .reference_files = {"next/program-time.json"},
+                       .heavy = true,
+                       .max_body_bytes = kProgramBodyBytes},
   };
   return routes;
 }

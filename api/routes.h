@@ -6,6 +6,7 @@
 // tests/api/route_table_test.cpp checks it against openapi.yaml, the reference files and the page.
 
 #include <array>
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
@@ -41,7 +42,14 @@ struct CalculationRoute {
   // reference/*.json plus the next/ files listed here. Unused slots stay empty.
   std::array<std::string_view, 3> reference_files{};
   std::string_view page_section = kNoPage;  // the id of its <section> in web/index.html
+  // Runs on the calculation pool whatever its answer forms (a program to time: MB of text).
+  bool heavy = false;
+  // The largest request body it takes; 0: the service's default (HttpLimits::max_body_bytes).
+  std::size_t max_body_bytes = 0;
 };
+
+// The body limit of the endpoints that take a whole program (POST /v1/program-time).
+inline constexpr std::size_t kProgramBodyBytes = 32 * 1024 * 1024;
 
 std::span<const CalculationRoute> calculation_routes();
 
@@ -49,7 +57,7 @@ std::span<const CalculationRoute> calculation_routes();
 // the program has blocks (a request field decides: up to megabytes, tens of milliseconds), so the
 // service runs it off the event loops that answer the light requests.
 constexpr bool can_be_heavy(const CalculationRoute& route) {
-  return route.forms == AnswerForms::json_and_plain_text_program;
+  return route.heavy || route.forms == AnswerForms::json_and_plain_text_program;
 }
 
 // The route of `path`, or nullptr.

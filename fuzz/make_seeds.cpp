@@ -12,6 +12,12 @@
 //    its example value;
 //  - <out dir>/paths.dict: the calculation paths, for the engine fuzzer's dictionary.
 //
+// The G-code reader fuzzer (gcode_reader_fuzzer) gets <out dir>/gcode_reader/: the programs the
+// program routes write for their first reference requests that answer 200, in each dialect the
+// route accepts (cut at a line end within the run's 4096-byte inputs), and a few hand-written
+// programs with what cutcalc never writes (arcs in every plane, R and turns, inch, lathe words,
+// refusals).
+//
 // The byte-level engine fuzzer (http_engine_fuzzer) gets <out dir>/http_engine/: each reference
 // request as a whole HTTP/1.1 request (Content-Length; every third one chunked, every fifth with
 // Expect: 100-continue) followed by a pipelined GET, plus a few fixed exchanges (pipelines, HEAD,
@@ -26,6 +32,9 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -195,6 +204,63 @@ void write_fixed_engine_seeds(const fs::path& corpus) {
                     "Content-Length: 100000000\r\n\r\n");
 }
 
+// Programs with the words cutcalc's own programs lack (machine-time.md section 4).
+void write_fixed_program_seeds(const fs::path& corpus) {
+  static const std::vector<std::pair<std::string, std::string>> kPrograms = {
+      {"arcs-linuxcnc.ngc",
+       "%\n(ARCS)\nG21 G90 G17 G64 P0.01\nG0 X10 Y0 Z1\nF600\nG3 X0 Y10 I-10 J0\n"
+       "G2 X10 Y0 R-10\nG3 X10 Y0 Z-3 I-10 J0 P3\nG18 G2 X0 Z-3 I-5 K0\nG19 G3 Y5 Z5 R5\n"
+       "G90.1 G17 G2 X10 Y5 I5 J5\nG91.1 G61.1 G1 X20 A90\nG61 G4 P0.5\nT2 M6\nM0\nM2\n%\n"},
+      {"lathe-linuxcnc.ngc",
+       "%\nG20 G18 G7 G90 G95\nG96 D2500 S600 M3\nG0 X2 Z0.1\nG1 X1.5 F0.004\n"
+       "G2 X1.8 Z-0.2 R0.2\nG97 S1000\nG8 G91 G1 X-0.1 Z-0.1\nM5\nM30\n%\n"},
+      {"lathe-fanuc.nc",
+       "%\nO0100 (TURN)\nG21\nG18 G40 G99\nG54\nT0303\nG00 X50. Z2.\nG50 S2000\n"
+       "G96 S180 M03\nG01 U-4. F0.2\nW-10.\nG02 X50. Z-15. R5.\nG04 X0.5\nG98 G01 Z5. F500.\n"
+       "M05\nM30\n%\n"},
+      {"mill-fanuc.nc",
+       "%\nO0001 (POCKET)\nG20\nG17 G40 G49 G80 G90 G94\nG54.1 P2\nT1 M06\n"
+       "G00 G43 Z0.5 H1\nS8000 M03\nG61 G01 Z-0.1 F20.\nG09 X1.\nG64 G03 X0 Y1. I-1. J0\n"
+       "G91 G01 X-1.\nG92 X0 Y0\nG04 P250\nM30\n%\n"},
+      {"turn-sinumerik.mpf",
+       "; TURN\nG18 G710 G40 G90 G95 DIAMON\nG54\nT=\"FINISH\" D1\nG0 X52 Z2\n"
+       "G96 S200 LIMS=3000 M3\nG1 X40 F0.15\nG2 X50 Z-5 CR=5\nDIAM90\nG4 F0.5\nG97 S800\n"
+       "G4 S2\nM5\nM30\n"},
+      {"mill-sinumerik.mpf",
+       "; MILL\nG17 G700 G40 G90 G94\nG500\nT3\nM6\nD1\nG0 Z0.5\nS6000 M3\n"
+       "G641 ADIS=0.002 G1 Z-0.1 F10\nG60 G2 X1 Y1 I0.5 J0.5 TURN=1\nG9 G64 G1 X0\nMSG(\"DONE\")\n"
+       "G93 G1 X1 F2\nM30\n"},
+      {"refusals.ngc",
+       "G21\n#1=5\nG1 X[1+#1] F100\no100 call\nG41 D1\nG81 Z-1 R1\nG28\nG64 Q0.1\n"
+       "G1 X1\nG95 G1 X2 F0.1\nG2 X3 Y0 R0.1\nM98 P10\n"},
+  };
+  for (const auto& [name, text] : kPrograms) {
+    std::ofstream(corpus / name) << text;
+  }
+}
+
+// The programs of one route for one reference request, in each dialect it accepts.
+std::size_t write_program_seeds(const cutcalc::api::CalculationRoute& route,
+                                const nlohmann::json& request, const std::string& name,
+                                const fs::path& corpus) {
+  std::size_t written = 0;
+  for (const char* dialect : {"linuxcnc", "fanuc", "sinumerik"}) {
+    nlohmann::json variant = request;
+    if (!variant.contains("program")) variant["program"] = nlohmann::json::object();
+    variant["program"]["dialect"] = dialect;
+    if (std::string_view(dialect) != "fanuc") variant["program"].erase("program_number");
+    const cutcalc::api::HandlerOutcome outcome = route.handler(variant);
+    const auto* both = std::get_if<cutcalc::api::JsonWithText>(&outcome);
+    if (both == nullptr) continue;  // the route refuses this dialect
+    std::string program = both->text;
+    constexpr std::size_t kMaxLen = 4096;  // scripts/ci-fuzz.sh -max_len
+    if (program.size() > kMaxLen) program.erase(program.rfind('\n', kMaxLen - 1) + 1);
+    std::ofstream(corpus / (std::string(dialect) + "-" + name + ".nc")) << program;
+    ++written;
+  }
+  return written;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -214,6 +280,10 @@ int main(int argc, char** argv) {
     const fs::path engine_corpus = out_dir / "http_engine";
     fs::create_directories(engine_corpus);
     write_fixed_engine_seeds(engine_corpus);
+    const fs::path gcode_corpus = out_dir / "gcode_reader";
+    fs::create_directories(gcode_corpus);
+    write_fixed_program_seeds(gcode_corpus);
+    std::size_t program_seeds = 0;
     std::ofstream harnesses(out_dir / "harnesses.txt");
     std::ofstream paths(out_dir / "paths.dict");
     for (const CalculationRoute& route : cutcalc::api::calculation_routes()) {
@@ -241,10 +311,18 @@ int main(int argc, char** argv) {
       const fs::path corpus = out_dir / cutcalc::api::route_slug(endpoint);
       const std::string prefix = file.parent_path().filename() == "next" ? "next-" : "";
       std::size_t index = 0;
+      std::size_t program_cases = 0;
       for (const auto& reference_case : reference.at("cases")) {
         const nlohmann::json& request = reference_case.at("request");
         const std::string name = prefix + file_name_of(reference_case.value("id", ""), index++);
         std::ofstream(corpus / name) << request.dump();
+        // The first three answered requests of a program route seed the G-code reader.
+        if (route->forms == cutcalc::api::AnswerForms::json_and_plain_text_program &&
+            program_cases < 3 && reference_case.at("expect").value("status", 0) == 200) {
+          program_seeds +=
+              write_program_seeds(*route, request, fs::path(name).stem().string(), gcode_corpus);
+          ++program_cases;
+        }
         collect_tokens(request, tokens);
         ++seeds;
         // Every third chunked, every fifth (of the rest) with Expect: 100-continue.
@@ -301,9 +379,10 @@ int main(int argc, char** argv) {
       dict << dict_entry(token) << '\n';
     }
     std::printf(
-        "seeds: %zu requests (%zu HTTP exchanges) from %zu reference files for %zu routes, %zu"
-        " dictionary tokens\n",
-        seeds, engine_seeds, files, cutcalc::api::calculation_routes().size(), tokens.size());
+        "seeds: %zu requests (%zu HTTP exchanges, %zu programs) from %zu reference files for %zu"
+        " routes, %zu dictionary tokens\n",
+        seeds, engine_seeds, program_seeds, files, cutcalc::api::calculation_routes().size(),
+        tokens.size());
   } catch (const std::exception& error) {
     std::fprintf(stderr, "cutcalc_fuzz_seeds: %s\n", error.what());
     return 1;

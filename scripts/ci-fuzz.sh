@@ -10,13 +10,19 @@
 # undocumented, body not JSON, NaN or infinity, a negative length, a response or accepted request
 # outside openapi.yaml, a malformed G-code program). Findings are kept in build/fuzz/run/artifacts.
 #
+# gcode_reader_fuzzer feeds raw bytes to the G-code reader as a program in every dialect, on a mill
+# and a lathe (fuzz/gcode_reader_fuzzer.cpp: refusals name a line, column and word inside the
+# program, every move is finite and continuous); its seeds are programs the program routes write
+# and a few hand-written ones (cutcalc_fuzz_seeds), its dictionary fuzz/gcode.dict.
+#
 # The last harness, http_engine_fuzzer, feeds raw bytes to the whole service over a socketpair
 # (fuzz/http_engine_fuzzer.cpp: framing, pipelining, every endpoint; its oracle checks that the
 # answers are well-framed HTTP/1.1, never more than the requests, problem+json for errors, and
 # that a fresh connection is still served). Its dictionary is fuzz/http.dict.
 #
-# Time: one request harness per route and answer form (13 today) x CUTCALC_FUZZ_SECONDS (default 30)
-# + the engine harness for CUTCALC_FUZZ_ENGINE_SECONDS (default 90) = 8 minutes of fuzzing, run
+# Time: one request harness per route and answer form (13 today) and the G-code reader harness x
+# CUTCALC_FUZZ_SECONDS (default 30) + the engine harness for CUTCALC_FUZZ_ENGINE_SECONDS (default
+# 90) = 8.5 minutes of fuzzing, run
 # CUTCALC_FUZZ_LANES harnesses at a time (default: one per CPU; a libFuzzer process uses one), so
 # about 4 minutes on two cores, plus the build (about 6 minutes from scratch on two idle cores;
 # incremental afterwards).
@@ -73,6 +79,7 @@ mkdir -p "$run_dir/seeds" "$run_dir/artifacts" "$run_dir/logs"
 "$build_dir/cutcalc_fuzz_seeds" "$reference_dir" openapi.yaml "$run_dir/seeds"
 cat fuzz/cutcalc.dict "$run_dir/seeds/tokens.dict" >"$run_dir/cutcalc.dict"
 cat fuzz/http.dict "$run_dir/seeds/paths.dict" "$run_dir/seeds/tokens.dict" >"$run_dir/http.dict"
+cp fuzz/gcode.dict "$run_dir/gcode.dict"
 
 # harness name -> "path form", from the route table.
 declare -A harness_route=()
@@ -81,8 +88,11 @@ while read -r name path form; do
   harness_route[$name]="$path $form"
   all_fuzzers+=("$name")
 done <"$run_dir/seeds/harnesses.txt"
+# The harnesses of their own (not a route row): their binary is their name, their seeds the
+# directory of their name less _fuzzer, their dictionary fuzz/<this>.dict.
+declare -A standalone_dict=([http_engine_fuzzer]=http [gcode_reader_fuzzer]=gcode)
 # The engine harness first: the longest, so the lanes end together.
-all_fuzzers=(http_engine_fuzzer "${all_fuzzers[@]}")
+all_fuzzers=(http_engine_fuzzer gcode_reader_fuzzer "${all_fuzzers[@]}")
 if [[ -n ${CUTCALC_FUZZERS:-} ]]; then
   read -r -a fuzzers <<<"$CUTCALC_FUZZERS"
 else
@@ -120,7 +130,7 @@ launch() {
   seeds=${fuzzer%_fuzzer}
   seeds=${seeds%_text}
   binary=$build_dir/$fuzzer
-  if [[ $fuzzer != http_engine_fuzzer ]]; then
+  if [[ -z ${standalone_dict[$fuzzer]:-} ]]; then
     [[ -n ${harness_route[$fuzzer]:-} ]] ||
       { echo "ci-fuzz: no harness $fuzzer (harnesses: ${all_fuzzers[*]})" >&2; exit 1; }
     read -r route_path route_form <<<"${harness_route[$fuzzer]}"
@@ -133,7 +143,7 @@ launch() {
   fi
   corpus=$build_dir/corpus/$fuzzer # kept between local runs; CI starts from the seeds
   dict=$run_dir/cutcalc.dict
-  [[ $fuzzer == http_engine_fuzzer ]] && dict=$run_dir/http.dict
+  [[ -n ${standalone_dict[$fuzzer]:-} ]] && dict=$run_dir/${standalone_dict[$fuzzer]}.dict
   if [[ -n $runs ]]; then
     limit=(-runs="$runs")
   elif [[ $fuzzer == http_engine_fuzzer ]]; then

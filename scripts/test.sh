@@ -18,6 +18,8 @@ for preset in release dev tsan; do
   step "${preset}: test"
   ctest --preset "$preset" -j 2
 done
+step "oracle: re-time 5 recorded programs with LinuxCNC 2.9's own planner, headless in simulation (tools/oracle)"
+scripts/ci-oracle.sh
 step "fuzz: every libFuzzer harness (ASan + UBSan) for a bounded time, seeded from the reference cases"
 scripts/ci-fuzz.sh
 step "contract: lint openapi.yaml, replay every reference and bad-input case through Prism, then property-based requests from the request schemas"

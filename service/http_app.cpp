@@ -140,6 +140,11 @@ struct HttpApp::Exchange {
 
 HttpApp::HttpApp(Config config) : config_(std::move(config)), cors_(config_.cors_origins) {
   install_routes();
+  for (const api::CalculationRoute& route : api::calculation_routes()) {
+    if (route.max_body_bytes > config_.http.limits.max_body_bytes) {
+      config_.http.limits.large_body_routes.emplace_back(route.path, route.max_body_bytes);
+    }
+  }
   engine_ = std::make_unique<EventLoopEngine>(
       event_loop_settings(config_.http),
       [this](const HttpRequest& request) { return answer(request); },
@@ -181,6 +186,9 @@ std::string HttpApp::engine_error_response(const EngineError& error) {
   const api::Problem said =
       error.status == 413
           ? problem(api::ProblemKind::payload_too_large, api::ErrorCode::body_too_large)
+      : error.status == 503 && error.retry_after_s > 0
+          ? problem(api::ProblemKind::unavailable, api::ErrorCode::uploads_busy,
+                    {{"retry_after_s", error.retry_after_s}})
       : error.status == 503
           ? problem(api::ProblemKind::unavailable, api::ErrorCode::connection_limit)
           : problem(api::ProblemKind::bad_request, api::ErrorCode::malformed_http,
@@ -193,6 +201,7 @@ std::string HttpApp::engine_error_response(const EngineError& error) {
                                    api::LanguageChoice::fixed));
   res.set_header(kRequestIdHeader, request_id);
   res.set_header(kNoSniffHeader, "nosniff");
+  if (error.retry_after_s > 0) res.set_header("Retry-After", std::to_string(error.retry_after_s));
   metrics_.observe("unmatched", error.method, res.status, 0.0);
   if (access_log_enabled()) {
     log_access(

@@ -39,6 +39,8 @@ class HttpApp {
   void serve_connection(int sock);
   // Every path served and its Allow value (for tests that must cover every route).
   [[nodiscard]] const RouteTable& routes() const { return routes_; }
+  // The engine's counters (what /metrics shows of connections and large bodies).
+  [[nodiscard]] const ConnectionCounters& counters() const { return counters_; }
 
   // One request, as the engine hands it over (also for tests without a socket).
   Reply answer(const HttpRequest& request);

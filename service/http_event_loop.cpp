@@ -47,6 +47,35 @@ class OpenCount {
   std::atomic<std::size_t>& count_;
 };
 
+// One of the engine's places for a body above the default limit (HttpLimits::max_large_bodies):
+// held from the head of such a request until it is answered or its connection goes.
+class LargeBodySlot {
+ public:
+  LargeBodySlot() = default;
+  LargeBodySlot(const LargeBodySlot&) = delete;
+  LargeBodySlot& operator=(const LargeBodySlot&) = delete;
+  ~LargeBodySlot() { release(); }
+
+  [[nodiscard]] bool held() const { return count_ != nullptr; }
+  bool acquire(std::atomic<std::uint64_t>& count, std::size_t limit) {
+    std::uint64_t now = count.load();
+    do {
+      if (now >= limit) return false;
+    } while (!count.compare_exchange_weak(now, now + 1));
+    count_ = &count;
+    return true;
+  }
+  void release() {
+    if (count_ != nullptr) count_->fetch_sub(1);
+    count_ = nullptr;
+  }
+
+ private:
+  std::atomic<std::uint64_t>* count_ = nullptr;
+};
+
+constexpr int kLargeBodyRetryAfterSeconds = 1;
+
 }  // namespace
 
 struct EventLoopEngine::Connection {
@@ -84,6 +113,12 @@ struct EventLoopEngine::Connection {
   std::string decoded_body;
   std::string path_scratch;
   std::size_t requests_left;
+  // A request with a large body (a program to time): its place, the input it may buffer (0: the
+  // default), and how much must be buffered before framing it again is worth it (a 32 MiB body
+  // arrives in thousands of reads; framing it after each would cost quadratic time).
+  LargeBodySlot large_body;
+  std::size_t buffer_limit = 0;
+  std::size_t frame_again_at = 0;
 
   bool peer_eof = false;           // the client will send nothing more
   bool last_response = false;      // close once the output is sent
@@ -291,7 +326,9 @@ class EventLoopEngine::Loop {
 
   // Reads what the socket has, up to the framing's buffer limit.
   Read read_input(Connection& connection) {
-    const std::size_t limit = engine_.settings_.limits.max_buffered_bytes();
+    const std::size_t limit = connection.buffer_limit > 0
+                                  ? connection.buffer_limit
+                                  : engine_.settings_.limits.max_buffered_bytes();
     if (connection.input_begin > 0) {  // compact: keep only unread bytes
       std::memmove(connection.input.data(), connection.input.data() + connection.input_begin,
                    connection.input_end - connection.input_begin);
@@ -389,14 +426,25 @@ class EventLoopEngine::Loop {
     while (!connection.last_response && !connection.awaiting && !connection.unread().empty()) {
       if (connection.pending_output() >= settings.limits.max_pending_output_bytes) return true;
       const std::string_view unread = connection.unread();
+      if (!worth_framing(connection, unread)) return false;
       const RequestFrame frame =
           classify_request(unread, settings.limits, &connection.fields, &connection.decoded_body);
       if (frame.verdict == RequestFrame::Verdict::incomplete) {
-        if (unread.size() >= settings.limits.max_buffered_bytes()) {  // cannot happen: framing
+        start_request(connection);
+        // Before the buffer check: an admitted large body may buffer more than the default.
+        if (frame.head_bytes > 0 && !admit_large_body(connection, frame, unread)) {
+          engine_.counters_.large_bodies_refused.fetch_add(1, std::memory_order_relaxed);
+          reject(connection, {503, "other large request bodies are being received",
+                              frame.method, frame.target, frame.origin,
+                              kLargeBodyRetryAfterSeconds});
+          return false;
+        }
+        const std::size_t cap = connection.buffer_limit > 0 ? connection.buffer_limit
+                                                            : settings.limits.max_buffered_bytes();
+        if (unread.size() >= cap) {  // cannot happen: framing
           reject(connection, {400, "the request is over the size limit", {}, {}, {}});
           return false;
         }
-        start_request(connection);
         if (frame.expects_continue && frame.head_bytes > 0 && !connection.continue_sent) {
           connection.output.append(kContinue, sizeof(kContinue) - 1);
           connection.continue_sent = true;
@@ -419,6 +467,7 @@ class EventLoopEngine::Loop {
       Reply reply = engine_.serve_(request);
       // The request's views die here: the reply owns what it needs.
       connection.consume(frame.wire_bytes);
+      end_large_body(connection);
       connection.in_request = false;
       connection.continue_sent = false;
       if (connection.requests_left > 1) --connection.requests_left;
@@ -449,6 +498,48 @@ class EventLoopEngine::Loop {
     return true;
   }
 
+  // False while a large body is still arriving and framing it again would find it incomplete.
+  static bool worth_framing(const Connection& connection, std::string_view unread) {
+    if (connection.frame_again_at == 0 || unread.size() >= connection.frame_again_at) return true;
+    // A chunked body may end anywhere: its last chunk and trailer end with an empty line.
+    return unread.ends_with("\r\n\r\n");
+  }
+
+  // A request whose route takes large bodies, with a body above the default limit (or chunked):
+  // takes one of the engine's places for such bodies, raises what the connection may buffer and
+  // gives the transfer time at HttpLimits::min_upload_bytes_per_s. False when every place is
+  // taken.
+  bool admit_large_body(Connection& connection, const RequestFrame& frame,
+                        std::string_view unread) {
+    const HttpLimits& limits = engine_.settings_.limits;
+    const std::size_t body_limit = limits.body_limit_for(frame.target);
+    if (body_limit <= limits.max_body_bytes) return true;
+    if (!frame.chunked && frame.body_bytes <= limits.max_body_bytes) return true;
+    if (!connection.large_body.held()) {
+      if (!connection.large_body.acquire(engine_.counters_.large_bodies_receiving,
+                                         limits.max_large_bodies)) {
+        return false;
+      }
+      connection.buffer_limit = limits.max_buffered_bytes(body_limit);
+      const std::size_t expected = frame.chunked ? body_limit : frame.body_bytes;
+      const auto transfer = std::chrono::milliseconds(
+          expected * 1000 / std::max<std::size_t>(limits.min_upload_bytes_per_s, 1));
+      if (connection.request_deadline != Clock::time_point::max()) {
+        connection.request_deadline += transfer;
+      }
+    }
+    connection.frame_again_at = frame.chunked
+                                    ? std::max(unread.size() * 2, limits.max_buffered_bytes())
+                                    : frame.body_offset + frame.body_bytes;
+    return true;
+  }
+
+  static void end_large_body(Connection& connection) {
+    connection.large_body.release();
+    connection.buffer_limit = 0;
+    connection.frame_again_at = 0;
+  }
+
   void start_request(Connection& connection) {
     if (connection.in_request) return;
     connection.in_request = true;
@@ -464,6 +555,7 @@ class EventLoopEngine::Loop {
     connection.last_response = true;
     connection.in_request = false;
     connection.drop_input();
+    end_large_body(connection);
   }
 
   enum class Flush { done, again, error };

@@ -125,7 +125,8 @@ bool parse_content_length(std::string_view value, bool& seen, std::uint64_t& len
 // Walks a chunked body from `pos` (RFC 9112 7.1). Sets the frame's wire and body sizes when the
 // last chunk and the trailer section are in; `decoded`, when given, receives the content.
 RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame frame,
-                           const HttpLimits& limits, std::string* decoded) {
+                           const HttpLimits& limits, std::size_t body_limit,
+                           std::string* decoded) {
   std::size_t framing = 0;  // chunk sizes, extensions, CRLFs and trailers
   std::size_t content = 0;
   std::size_t fields = 0;
@@ -163,7 +164,7 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
     if (digits == 0 || (!rest.empty() && (rest.front() != ';' || !is_field_value(rest)))) {
       return reject(frame, 400, "malformed chunk size line");
     }
-    if (size > limits.max_body_bytes - content) {
+    if (size > body_limit - content) {
       return reject(frame, 413, "the request body is over the size limit");
     }
     if (size == 0) break;
@@ -313,9 +314,10 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits,
       return reject(frame, 400, "the only transfer coding accepted is chunked");
     }
     frame.chunked = true;
-    return frame_chunked(input, pos, frame, limits, decoded_body);
+    return frame_chunked(input, pos, frame, limits, limits.body_limit_for(frame.target),
+                         decoded_body);
   }
-  if (length > limits.max_body_bytes) {
+  if (length > limits.body_limit_for(frame.target)) {
     return reject(frame, 413, "the request body is over the size limit");
   }
   frame.body_bytes = static_cast<std::size_t>(length);

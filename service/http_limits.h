@@ -5,6 +5,10 @@
 
 #include <chrono>
 #include <cstddef>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 namespace cutcalc::service {
 
@@ -36,11 +40,29 @@ struct HttpLimits {
   // Pipelined requests are served until this much of their responses waits for the socket.
   std::size_t max_pending_output_bytes = 256 * 1024;
 
-  // Unread input a connection buffers at most: the largest request that can be framed (head,
-  // body and chunk framing, which counts against the head's allowance).
-  [[nodiscard]] std::size_t max_buffered_bytes() const {
-    return 2 * max_head_bytes + max_body_bytes;
+  // Paths whose route row takes larger bodies (api::CalculationRoute::max_body_bytes: a whole
+  // program to time), with their limit; every other target keeps max_body_bytes.
+  std::vector<std::pair<std::string, std::size_t>> large_body_routes;
+  // Requests that may buffer a body above max_body_bytes at once (all loops together); one more
+  // is answered 503 with Retry-After before its body is read.
+  std::size_t max_large_bodies = 4;
+  // A large body's transfer is given request_timeout plus its length at this rate.
+  std::size_t min_upload_bytes_per_s = 1000 * 1000;
+
+  // The body limit of a request target (its path: the query is ignored).
+  [[nodiscard]] std::size_t body_limit_for(std::string_view target) const {
+    const std::string_view path = target.substr(0, target.find('?'));
+    for (const auto& [route, limit] : large_body_routes) {
+      if (path == route) return limit;
+    }
+    return max_body_bytes;
   }
+  // Unread input a connection buffers at most: the largest request that can be framed (head,
+  // body and chunk framing, which counts against the head's allowance), for a body limit.
+  [[nodiscard]] std::size_t max_buffered_bytes(std::size_t body_limit) const {
+    return 2 * max_head_bytes + body_limit;
+  }
+  [[nodiscard]] std::size_t max_buffered_bytes() const { return max_buffered_bytes(max_body_bytes); }
 };
 
 }  // namespace cutcalc::service

@@ -86,6 +86,10 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
        counters.request_timeouts},
       {"cutcalc_http_connections_refused_total", "Connections answered 503 at the connection cap.",
        counters.rejected_at_cap},
+      {"cutcalc_http_large_bodies_refused_total",
+       "Requests with a large body (a program to time) answered 503 with Retry-After because "
+       "max_large_bodies others were being received.",
+       counters.large_bodies_refused},
       {"cutcalc_http_epoll_failures_total", "epoll_ctl calls that failed (the connection closed).",
        counters.epoll_failures},
       {"cutcalc_calculation_pool_jobs_total",
@@ -115,6 +119,11 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
          "# TYPE cutcalc_calculation_pool_running gauge\n"
          "cutcalc_calculation_pool_running "
       << counters.calculations.running.load() << '\n';
+  out << "# HELP cutcalc_http_large_bodies_receiving Requests receiving a body over the default "
+         "limit now (a program to time); at most max_large_bodies.\n"
+         "# TYPE cutcalc_http_large_bodies_receiving gauge\n"
+         "cutcalc_http_large_bodies_receiving "
+      << counters.large_bodies_receiving.load() << '\n';
   out << "# HELP cutcalc_http_connection_buffer_bytes Bytes the open connections hold in their "
          "buffers (as of the event loops' last sweep; idle connections hold none).\n"
          "# TYPE cutcalc_http_connection_buffer_bytes gauge\n"

@@ -21,12 +21,12 @@ nlohmann::json main_time_json(const domain::entry::MainTimeResult& result,
 HandlerOutcome handle_main_time(const nlohmann::json& body) {
   auto request = read_main_time_request(body, false);
   if (auto* problem = std::get_if<Problem>(&request)) return std::move(*problem);
-  const auto& [params, limits, unused] = std::get<MainTimeRequest>(request);
+  const auto& [params, machine, unused] = std::get<MainTimeRequest>(request);
   const auto result = domain::entry::compute_main_time(params);
   if (!result.ok()) {
     return to_problem(result.error(), kEntryErrorPointers);
   }
-  return main_time_json(result.value(), limits);
+  return main_time_json(result.value(), machine.limits);
 }
 
 }  // namespace cutcalc::api::entry

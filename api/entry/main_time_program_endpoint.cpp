@@ -4,6 +4,7 @@
 #include "api/entry/entry_error_pointers.h"
 #include "api/entry/main_time_endpoint.h"
 #include "api/entry/main_time_request.h"
+#include "api/machine_time/program_machine_time.h"
 #include "api/program/program_reader.h"
 #include "domain/program/pass_program.h"
 
@@ -13,7 +14,8 @@ HandlerOutcome handle_main_time_program(const nlohmann::json& body) {
   namespace model = domain::program;
   auto request = read_main_time_request(body, true);
   if (auto* problem = std::get_if<Problem>(&request)) return std::move(*problem);
-  const auto& [params, limits, options] = std::get<MainTimeRequest>(request);
+  const auto& [params, machine, options] = std::get<MainTimeRequest>(request);
+  const domain::program::MachineLimits& limits = machine.limits;
   const auto main_time = domain::entry::compute_main_time(params);
   if (!main_time.ok()) {
     return to_problem(main_time.error(), kEntryErrorPointers);
@@ -36,7 +38,11 @@ HandlerOutcome handle_main_time_program(const nlohmann::json& body) {
                          {"not_modelled", program.not_modelled},
                          {"warnings", program::to_json(program.warnings)},
                          {"main_time", main_time_json(main_time.value(), limits)}};
-  return JsonWithText{std::move(json), program.program, program.file_name};
+  JsonWithText answer{std::move(json), program.program, program.file_name};
+  if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
+    return std::move(*problem);
+  }
+  return answer;
 }
 
 }  // namespace cutcalc::api::entry

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api/problem.h"
+#include "api/program/machine_reader.h"
 #include "domain/entry/main_time.h"
 #include "domain/program/program_options.h"
 
@@ -13,7 +14,7 @@ namespace cutcalc::api::entry {
 
 struct MainTimeRequest {
   domain::entry::MainTimeParams params;
-  domain::program::MachineLimits limits;    // `machine`
+  program::MachineRequest machine;          // `machine` (axes: the program endpoint only)
   domain::program::ProgramOptions program;  // `program` (defaults unless with_program)
 };
 

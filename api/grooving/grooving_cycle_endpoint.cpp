@@ -1,3 +1,5 @@
+#include "api/machine_time/program_machine_time.h"
+#include "api/program/machine_reader.h"
 #include "api/grooving/grooving_cycle_endpoint.h"
 
 #include <utility>
@@ -114,6 +116,8 @@ HandlerOutcome handle_grooving_cycle(const nlohmann::json& body) {
   const model::GroovingCycleParams params = read_params(in);
   const domain::program::ProgramOptions options =
       program::read_program_options(in, program::ProgramKind::lathe);
+  const program::MachineRequest machine =
+      program::read_machine(in, program::MachineUse::program_lathe);
   in.reject_unknown_fields();
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
@@ -134,7 +138,11 @@ HandlerOutcome handle_grooving_cycle(const nlohmann::json& body) {
   json["dialect"] = domain::program::dialect_name(options.dialect);
   json["units"] = domain::program::units_name(options.units);
   json["decimals"] = domain::program::decimals_of(options);
-  return JsonWithText{std::move(json), program.program, program.file_name};
+  JsonWithText answer{std::move(json), program.program, program.file_name};
+  if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
+    return std::move(*problem);
+  }
+  return answer;
 }
 
 }  // namespace cutcalc::api::grooving

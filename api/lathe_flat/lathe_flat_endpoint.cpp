@@ -1,3 +1,5 @@
+#include "api/machine_time/program_machine_time.h"
+#include "api/program/machine_reader.h"
 #include "api/lathe_flat/lathe_flat_endpoint.h"
 
 #include <array>
@@ -126,6 +128,8 @@ HandlerOutcome handle_lathe_flat(const nlohmann::json& body) {
   const model::LatheFlatParams params = read_params(in, errors, geometry_field);
   const domain::program::ProgramOptions options =
       program::read_program_options(in, program::ProgramKind::lathe_flat);
+  const program::MachineRequest machine =
+      program::read_machine(in, program::MachineUse::program_lathe);
   in.reject_unknown_fields();
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
@@ -150,7 +154,11 @@ HandlerOutcome handle_lathe_flat(const nlohmann::json& body) {
   json["dialect"] = domain::program::dialect_name(options.dialect);
   json["units"] = domain::program::units_name(options.units);
   json["decimals"] = domain::program::decimals_of(options);
-  return JsonWithText{std::move(json), written.value().program, written.value().file_name};
+  JsonWithText answer{std::move(json), written.value().program, written.value().file_name};
+  if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
+    return std::move(*problem);
+  }
+  return answer;
 }
 
 }  // namespace cutcalc::api::lathe_flat

@@ -1,3 +1,5 @@
+#include "api/machine_time/program_machine_time.h"
+#include "api/program/machine_reader.h"
 #include "api/polygon/polygon_hole_endpoint.h"
 
 #include <utility>
@@ -29,6 +31,7 @@ constexpr std::int64_t kMaxLoopsPerLayer = 100;
 struct PolygonHoleRequest {
   model::PolygonHoleParams params;
   bool include_geometry = false;
+  program::MachineRequest machine;
 };
 
 model::PolygonHoleParams read_params(ObjectReader& in) {
@@ -72,7 +75,15 @@ PolygonHoleRequest read_request(const nlohmann::json& body, ObjectReader& in,
       request.params.safe_z_mm = request.params.program->safe_z_mm;
     }
   }
-  request.params.machine = program::read_machine_limits(in);
+  // machine-time.md section 7: a polygon program blends within the fit's tolerance by default.
+  if (request.params.program && request.params.program->path_control) {
+    auto& control = *request.params.program->path_control;
+    if (control.mode == domain::program::PathMode::blend && !control.tolerance_mm) {
+      control.tolerance_mm = request.params.tolerance_mm;
+    }
+  }
+  request.machine = program::read_machine(in, program::MachineUse::program_mill);
+  request.params.machine = request.machine.limits;
   in.reject_unknown_fields();
   return request;
 }
@@ -173,8 +184,12 @@ HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
     }
     json["geometry"] = to_json(geometry.value());
   }
-  return JsonWithText{std::move(json), model::program_with_warning_comments(result.value()),
+  JsonWithText answer{std::move(json), model::program_with_warning_comments(result.value()),
                       result.value().file_name};
+  if (auto problem = machine_time::add_machine_time(answer, request.machine, options.dialect)) {
+    return std::move(*problem);
+  }
+  return answer;
 }
 
 }  // namespace cutcalc::api::polygon

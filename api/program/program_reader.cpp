@@ -9,6 +9,9 @@ namespace {
 
 namespace model = domain::program;
 
+// A blending tolerance above this is no longer a tolerance of a machined contour.
+constexpr double kMaxPathToleranceMm = 10.0;
+
 void add_name_error(ObjectReader& in, const model::NameProblem& problem) {
   switch (problem.rule) {
     case model::NameRule::shape:
@@ -116,6 +119,26 @@ void read_motion(ObjectReader& in, ProgramKind kind, model::ProgramOptions& opti
       in.number_or("rapid_mm_per_min", Bounds::positive(), options.rapid_mm_per_min);
 }
 
+// The path control mode (machine-time.md section 7): the tolerance only with blend.
+void read_path_control(ObjectReader& program, model::ProgramOptions& options) {
+  ObjectReader in = program.object("path_control", false);
+  if (!in.present()) return;
+  const auto mode = in.required_choice("mode", {"exact_stop", "exact_path", "blend"});
+  model::PathControl control;
+  control.mode = mode == "exact_stop"   ? model::PathMode::exact_stop
+                 : mode == "exact_path" ? model::PathMode::exact_path
+                                        : model::PathMode::blend;
+  if (in.has("tolerance_mm")) {
+    if (control.mode != model::PathMode::blend) {
+      in.reject("tolerance_mm", ErrorCode::requires_field, {{"field", "mode: blend"}});
+    } else {
+      control.tolerance_mm = in.optional_number("tolerance_mm", Bounds::positive(kMaxPathToleranceMm));
+    }
+  }
+  in.reject_unknown_fields();
+  options.path_control = control;
+}
+
 }  // namespace
 
 model::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind) {
@@ -133,17 +156,9 @@ model::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind)
     read_tool_and_machine_state(in, kind, options);
     read_motion(in, kind, options);
   }
+  read_path_control(in, options);
   in.reject_unknown_fields();
   return options;
-}
-
-model::MachineLimits read_machine_limits(ObjectReader& root) {
-  ObjectReader in = root.object("machine", false);
-  model::MachineLimits limits;
-  limits.max_spindle_rpm = in.optional_number("max_spindle_rpm", Bounds::positive());
-  limits.max_feed_mm_per_min = in.optional_number("max_feed_mm_per_min", Bounds::positive());
-  in.reject_unknown_fields();
-  return limits;
 }
 
 nlohmann::json to_json(const std::vector<model::Warning>& warnings) {

@@ -24,9 +24,6 @@ enum class ProgramKind {
 // The `program` object of `root` (absent: every default of `kind`).
 domain::program::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind);
 
-// The `machine` object of `root` (absent: no limits).
-domain::program::MachineLimits read_machine_limits(ObjectReader& root);
-
 // [{code, detail}, ...] of either program, the code by its name.
 nlohmann::json to_json(const std::vector<domain::program::Warning>& warnings);
 

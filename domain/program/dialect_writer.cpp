@@ -1,5 +1,6 @@
 #include "domain/program/dialect_writer.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -160,7 +161,44 @@ std::string program_header(const std::vector<std::string>& comments,
 }
 
 std::string work_offset_line(const ProgramOptions& options) {
-  return cat({"G", std::to_string(options.work_offset), "\n"});
+  return cat({"G", std::to_string(options.work_offset), "\n"}) + path_control_lines(options);
+}
+
+// machine-time.md section 7: the mode in each dialect. Fanuc has no separate exact path mode and
+// sets its blending tolerance in parameters; Sinumerik blends within ADIS under G641.
+std::string path_control_lines(const ProgramOptions& options) {
+  if (!options.path_control) return {};
+  const PathControl& control = *options.path_control;
+  // Never printed as 0 (LinuxCNC's G64 P0 is no tolerance at all): at least one unit of the last
+  // decimal, the finest the program can state.
+  const auto tolerance = [&] {
+    const double least = std::pow(10.0, -decimals_of(options));
+    return format_fixed(std::max(to_program_units(*control.tolerance_mm, options.units), least),
+                        decimals_of(options));
+  };
+  switch (control.mode) {
+    case PathMode::exact_stop:
+      return options.dialect == Dialect::linuxcnc ? "G61.1\n"
+             : options.dialect == Dialect::fanuc  ? "G61\n"
+                                                  : "G60\n";
+    case PathMode::exact_path:
+      return options.dialect == Dialect::sinumerik ? "G60\n" : "G61\n";
+    case PathMode::blend:
+      break;
+  }
+  if (!control.tolerance_mm) return "G64\n";
+  switch (options.dialect) {
+    case Dialect::linuxcnc:
+      return cat({"G64 P", tolerance(), "\n"});
+    case Dialect::fanuc:
+      return cat({"G64\n", comment_line("BLEND TOLERANCE " + tolerance() +
+                                             (options.units == Units::inch ? " IN" : " MM") +
+                                             " IS SET IN THE CONTROL PARAMETERS",
+                                         Dialect::fanuc)});
+    case Dialect::sinumerik:
+      return cat({"G641 ADIS=", tolerance(), "\n"});
+  }
+  return {};
 }
 
 std::string safe_start_text(const SafeStart& start, const ProgramOptions& options) {

@@ -37,6 +37,8 @@ std::string program_header(const std::vector<std::string>& comments, const Progr
 std::string program_start(const std::vector<std::string>& comments, const ProgramOptions& options);
 // "G54\n": the work offset line.
 std::string work_offset_line(const ProgramOptions& options);
+// The path control mode's line(s) (machine-time.md section 7), or "" when the program names none.
+std::string path_control_lines(const ProgramOptions& options);
 std::string safe_start_text(const SafeStart& start, const ProgramOptions& options);
 std::string program_end(const ProgramOptions& options);
 

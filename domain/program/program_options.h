@@ -16,6 +16,14 @@ enum class Dialect { linuxcnc, fanuc, sinumerik };
 enum class Units { mm, inch };
 enum class Coolant { off, flood, mist };
 
+// How the control runs through corners (machine-time.md section 7): stated by the line after the
+// work offset, so that the machine runs what was timed and keeps the accuracy asked for.
+enum class PathMode { exact_stop, exact_path, blend };
+struct PathControl {
+  PathMode mode = PathMode::blend;
+  std::optional<double> tolerance_mm;  // blend only; absent: none (polygon: the fit tolerance)
+};
+
 inline constexpr double kMmPerInch = 25.4;
 inline constexpr double kMPerFoot = 0.3048;  // G96 surface speed in ft/min under inch units
 inline constexpr int kMinDecimals = 3;
@@ -38,6 +46,7 @@ struct ProgramOptions {
   double clearance_mm = 2.0;                     // pass program: rapid to this above the level
   std::optional<double> plunge_feed_mm_per_min;  // pass program; absent: S_m1
   double rapid_mm_per_min = 10000.0;             // pass program: for the rapid time (G10)
+  std::optional<PathControl> path_control;       // absent: the program names no mode (as before)
 };
 
 // linuxcnc 4 (mm) / 5 (inch); fanuc and sinumerik 3 / 4: their usual least input increment.

@@ -364,9 +364,9 @@ TEST(OpenApiDocument, EveryOperationHasAUniqueOperationIdSummaryDescriptionAndTa
     ASSERT_TRUE(o.op->contains("tags")) << id;
     EXPECT_FALSE((*o.op)["tags"].empty()) << id;
   }
-  // 16 paths (9 calculations, 5 operations, the web page and its assets), each with OPTIONS; the
+  // 17 paths (10 calculations, 5 operations, the web page and its assets), each with OPTIONS; the
   // 7 GET paths with HEAD.
-  EXPECT_EQ(ids.size(), 16U + 16U + 7U);
+  EXPECT_EQ(ids.size(), 17U + 17U + 7U);
 }
 
 TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {
@@ -389,7 +389,7 @@ TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {
           << o.path << " " << status;
     }
   }
-  EXPECT_EQ(json_body_operations, 9);
+  EXPECT_EQ(json_body_operations, 10);
 }
 
 TEST(OpenApiDocument, EveryResponseCarriesXRequestIdAndEveryOperationAcceptsIt) {
