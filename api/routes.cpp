@@ -70,6 +70,7 @@ std::span<const CalculationRoute> calculation_routes() {
                        .handler = &machine_time::handle_program_time,
                        .plot = {"profile_points", "200", ""},
                        .reference_files = {"next/program-time.json"},
+                       .page_section = "program-time",
                        .heavy = true,
                        .max_body_bytes = kProgramBodyBytes},
   };

@@ -19,6 +19,7 @@ namespace model = domain::polygon;
 constexpr ErrorPointer kErrorPointers[] = {
     {domain::ErrorCode::tolerance_unreachable, "/tolerance_mm"},
     {domain::ErrorCode::program_too_large, "/step_down_mm"},
+    {domain::ErrorCode::word_prints_as_zero, "/spindle_speed_rpm"},
 };
 
 // Spec section 10: d below 1 mm is beyond the program's 0.1 um resolution; a tolerance below

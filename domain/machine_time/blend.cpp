@@ -58,7 +58,11 @@ double inscribed_limit(Vec3 n, const std::array<double, 3>& bounds) {
   return result;
 }
 
-double max_target_velocity_unscaled(const Segment& s) { return std::min(s.reqvel, s.maxvel); }
+// tcGetMaxTargetVel: a segment synchronised to the spindle may go as fast as its axes allow (the
+// spindle sets its speed as it runs), any other as fast as its feed.
+double max_target_velocity_unscaled(const Segment& s) {
+  return s.synced ? s.maxvel : std::min(s.reqvel, s.maxvel);
+}
 
 // findIntersectionAngle: half the angle between -u1 and u2 (pi/2 for a straight continuation).
 double intersection_angle(Vec3 u1, Vec3 u2) {
@@ -87,6 +91,10 @@ double max_target_velocity(const Segment& s, const Machine& machine) {
     v = std::min(v, *machine.max_linear_velocity_mm_per_s);
   }
   return v;
+}
+
+double real_target_velocity(const Segment& s, const Machine& machine) {
+  return std::min(s.reqvel, max_target_velocity(s, machine));
 }
 
 double triangle_velocity(const Segment& s) {
@@ -215,7 +223,10 @@ std::optional<BlendArc> make_blend_arc(const Segment& prev, const Segment& next,
   arc.line = prev.line;
   arc.target = s_arc;
   arc.nominal_length = s_arc;
-  arc.reqvel = v_req;
+  // A blend arc takes the planner's state when it is made (tcSetupState): synchronised to the
+  // spindle when the next block is, at that block's feed per revolution.
+  arc.synced = next.synced;
+  arc.reqvel = next.synced ? next.reqvel : v_req;
   arc.maxvel = v_plan;
   arc.maxaccel = a_max;
   arc.term = Termination::tangent;

@@ -34,8 +34,10 @@ std::optional<BlendArc> make_blend_arc(const Segment& prev, const Segment& next,
 double overall_accel(const Segment& segment);
 double tangential_accel(const Segment& segment);
 
-// The largest velocity the segment asks for (tpGetMaxTargetVel with no feed override).
+// The largest velocity the segment may be planned for (tpGetMaxTargetVel with no feed override),
+// and the one it runs at (tpGetRealTargetVel: the feed, or the spindle's feed when synchronised).
 double max_target_velocity(const Segment& segment, const Machine& machine);
+double real_target_velocity(const Segment& segment, const Machine& machine);
 
 // tpComputeBlendVelocity: the velocities below which a parabolic blend starts; `net` is the
 // equivalent velocity through the corner (estimateParabolicBlendPerformance).

@@ -107,6 +107,7 @@ class Reader {
 
   // ---- the block
   bool execute() {
+    offset_word_ = false;
     used_ = 0;
     named_used_ = 0;
     actions_ = 0;
@@ -136,6 +137,13 @@ class Reader {
     if (has(GAction::dwell) && !dwell()) return false;
     // rs274ngc reads an X word before it runs the block's G7/G8 (interp_read.cc read_x).
     x_diameter_ = options_.dialect == Dialect::linuxcnc ? x_diameter_before : diameter_;
+    // machine-time.md M8: the control finishes its queued motion before a spindle, coolant or
+    // offset word (LinuxCNC's task waits for motion before EMC_SPINDLE_*, EMC_COOLANT_*,
+    // SET_G5X, SET_OFFSET), and these run before the block's motion (rs274ngc's order).
+    if (block_.has('S') || has_m(MAction::spindle_on) || has_m(MAction::spindle_off) ||
+        has_m(MAction::ignored) || offset_word_) {
+      emit_point(MoveKind::sync);
+    }
     if (!motion()) return false;
     if (has_m(MAction::stop)) emit_stop();
     if (has_m(MAction::end)) ended_ = true;
@@ -171,6 +179,10 @@ class Reader {
         const std::uint32_t bit = 1U << static_cast<unsigned>(meaning.group);
         if ((groups & bit) != 0) return fail(Refusal::malformed, word.ref);  // two of one group
         groups |= bit;
+      }
+      if (meaning.group == GGroup::work_offset || meaning.group == GGroup::tool_length ||
+          meaning.action == GAction::set_origin || meaning.action == GAction::cancel_origin) {
+        offset_word_ = true;
       }
       if (meaning.group == GGroup::motion) motion_word_ = &word.ref;
       if (meaning.action == GAction::dwell || meaning.action == GAction::set_origin ||
@@ -350,9 +362,12 @@ class Reader {
     return true;
   }
 
-  void emit_stop() {
+  void emit_stop() { emit_point(MoveKind::untimed_stop); }
+
+  // A move that goes nowhere: a stop or a flush of the queue.
+  void emit_point(MoveKind kind) {
     Move move;
-    move.kind = MoveKind::untimed_stop;
+    move.kind = kind;
     move.line = line_;
     move.start = position_;
     move.end = position_;
@@ -451,14 +466,16 @@ class Reader {
   // Where the block's axis words take the tool (machine-time.md 4: work offsets as 0; G92 known).
   bool target(AxisVector& end) {
     end = position_;
-    const std::uint32_t present = block_.letters & axis_letters_;
+    // Not the words a dwell took (Fanuc G04 X, U).
+    const std::uint32_t present = block_.letters & axis_letters_ & ~used_;
     if (present == 0) return true;
     for (std::size_t axis = 0; axis < kAxisCount; ++axis) {
       if ((present & axis_words_[axis]) == 0) continue;
       const char absolute_letter = kAxisLetters[axis];
       const char increment_letter = fanuc_lathe_ ? kFanucLatheIncrements[axis] : '\0';
-      const bool has_absolute = block_.has(absolute_letter);
-      const bool has_increment = increment_letter != '\0' && block_.has(increment_letter);
+      const bool has_absolute = (present & letter(absolute_letter)) != 0;
+      const bool has_increment =
+          increment_letter != '\0' && (present & letter(increment_letter)) != 0;
       if (has_absolute && has_increment) {
         return fail(Refusal::malformed, block_.word(increment_letter));  // X and U together
       }
@@ -752,6 +769,7 @@ class Reader {
   double feed_ = 0.0;        // F as written
   double feed_scale_ = 1.0;  // mm per program unit of F when it was written
   bool spindle_on_ = false;
+  bool offset_word_ = false;  // the block has a work or tool offset word, or G92
   bool constant_surface_ = false;
   double spindle_s_ = 0.0;      // S as written: rev/min, or the surface speed under G96
   double surface_scale_ = 1.0;  // m/min per unit of S when it was written

@@ -70,7 +70,7 @@ Planner::Planner(const Machine& machine, RunSink sink)
     : machine_(machine), sink_(std::move(sink)) {}
 
 double Planner::target_velocity(const Segment& segment) const {
-  return max_target_velocity(segment, machine_);
+  return real_target_velocity(segment, machine_);
 }
 
 void Planner::add(const Move& move) {
@@ -222,7 +222,7 @@ void Planner::optimize() {
     if (!tc.finalized) {
       // The last segment may still lose half its length to a blend: assume it stops at half.
       const double triangle = std::sqrt(tangential_accel(tc) * tc.target);
-      prev.finalvel = std::min(prev.maxvel, std::min(triangle, target_velocity(tc)));
+      prev.finalvel = std::min(prev.maxvel, std::min(triangle, max_target_velocity(tc, machine_)));
       if (prev.kink_vel >= 0.0) {
         prev.finalvel = std::min(prev.finalvel, prev.kink_vel);
       }

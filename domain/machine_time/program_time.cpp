@@ -13,6 +13,9 @@ namespace {
 using program::Warning;
 using program::WarningCode;
 
+// A block that loses less than this lost nothing (rounding of sums of times).
+constexpr double kNothingLostS = 1e-6;
+
 // How often something happened and where first: one warning for all of them.
 struct Occurrences {
   std::size_t count = 0;
@@ -96,7 +99,7 @@ class Accounting {
  private:
   // Keeps the kSlowestBlocks blocks that lost the most (a block's runs come one after another).
   void close_block() {
-    if (block_.line == 0 || !(block_.lost_s > 0.0)) {
+    if (block_.line == 0 || !(block_.lost_s > kNothingLostS)) {
       block_ = {};
       block_worst_ = -1.0;
       return;

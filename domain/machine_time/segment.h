@@ -35,6 +35,7 @@ struct Segment {
   bool rapid = false;
   bool rotary = false;       // A, B or C move: no tangency check, no blend arc (tcRotaryMotionCheck)
   bool pure_rotary = false;  // only rotary axes move: degrees, no trajectory maximum
+  bool synced = false;       // feed per revolution (TC_SYNC_VELOCITY): the feed follows the spindle
   std::size_t line = 0;      // the block it comes from (a blend arc: the block before it)
 
   double target = 0.0;          // length still to run

@@ -134,6 +134,7 @@ void set_feeds(Segment& segment, const Move& move, const AxisCaps& caps, double 
     segment.nominal_velocity = caps.velocity;
     return;
   }
+  segment.synced = move.feed.mode == FeedMode::per_revolution;
   segment.feed_cap = requested_velocity(move, length);
   segment.reqvel = std::min(segment.feed_cap, caps.velocity);
   segment.maxvel = caps.velocity;

@@ -18,6 +18,7 @@
 #include "domain/polygon/printed_deviation.h"
 #include "domain/polygon/rotor.h"
 #include "domain/polygon/rotor_dimensions.h"
+#include "domain/program/dialect_writer.h"
 
 namespace cutcalc::domain::polygon {
 
@@ -137,6 +138,25 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   layout.spindle_speed_rpm = params.spindle_speed_rpm;
   layout.synchronization = params.synchronization;
   layout.feed_per_rev_mm = result.feed_per_rev_mm;
+  // programs.md 1.2: an S or F word that prints as 0 would stop a G95 program (no feed) or the
+  // spindle; refused as the pass program refuses it.
+  {
+    const int decimals = params.program ? program::decimals_of(*params.program) : 4;
+    const double per_mm = params.program && params.program->units == program::Units::inch
+                              ? 1.0 / program::kMmPerInch
+                              : 1.0;
+    const double feed = params.synchronization == Synchronization::c_axis
+                            ? params.spindle_speed_rpm * result.feed_per_rev_mm
+                            : result.feed_per_rev_mm;
+    const std::string s_word =
+        params.program ? program::spindle_text(params.spindle_speed_rpm, params.program->dialect,
+                                               decimals)
+                       : detail::fmt4(params.spindle_speed_rpm);
+    if (program::prints_as_zero(s_word) ||
+        program::prints_as_zero(program::format_fixed(feed * per_mm, decimals))) {
+      return make_error(ErrorCode::word_prints_as_zero, "S or F");
+    }
+  }
   if (!params.program) {
     result.program = detail::write_program(layout, loop);
     result.file_name = "polygon-hole-N" + std::to_string(N) + "-d" + detail::fmt4(d) + ".ngc";

@@ -18,7 +18,9 @@
 //     same request; grooving: the groove's dimension texts match W, h, B and X2, the pattern strip
 //     draws the first revolutions; flat: the cross-section's dimension texts match d, w and D, the
 //     tool at five steps, the step table has 2N + 1 rows, the magnified segment labels the flatness
-//     error in µm.
+//     error in µm;
+//   - program time: the case's program goes into the text area and its machine into the Machine
+//     fieldset; the velocity profile is drawn with the estimated and the nominal time.
 // One invalid input (cutter diameter -5) must show the API's own message for that pointer next to
 // the input, with aria-invalid and aria-describedby; a resubmit clears it. At 375 px and 1280 px,
 // on the page's default values, every form is reached and submitted with the keyboard alone (Tab,
@@ -178,6 +180,15 @@ const SECTIONS = [
       'flat-spiral': ['flat-line', 'hump', 'step-start', 'step-end', 'dimension-flatness', 'exaggeration'],
     },
     program: { arcs: false },
+  },
+  {
+    id: 'program-time',
+    file: 'next/program-time.json',
+    tolerance: c => absOrRel(c.tolerance),
+    // The program goes into the text area; the machine into the Machine fieldset (page-wide).
+    endpoints: { main: '/v1/program-time' },
+    shown: { main: ['/estimated_time_min', '/nominal_time_min'] },
+    diagrams: { 'velocity-profile': ['profile', 'estimated-time', 'nominal-time', 'axis-x', 'axis-y'] },
   },
 ];
 
@@ -446,7 +457,7 @@ async function fillWithCase(page, sectionId, request) {
   });
   const controls = async () =>
     form.evaluate(f =>
-      [...f.querySelectorAll('input[name], select[name]')].map(c => ({
+      [...f.querySelectorAll('input[name], select[name], textarea[name]')].map(c => ({
         name: c.getAttribute('name'),
         tag: c.tagName.toLowerCase(),
         type: (c.getAttribute('type') ?? '').toLowerCase(),
@@ -481,7 +492,8 @@ async function fillWithCase(page, sectionId, request) {
     } else if (mine[0].type === 'checkbox') {
       await form.locator(`input[name=${cssString(ptr)}]`).setChecked(Boolean(value));
     } else {
-      await form.locator(`input[name=${cssString(ptr)}]`).fill(String(value));
+      // A text input, or a text area (a program to time).
+      await form.locator(`${mine[0].tag}[name=${cssString(ptr)}]`).fill(String(value));
     }
     filled.set(ptr, value);
   }
@@ -499,7 +511,7 @@ async function fillWithFirstFittingCase(page, section) {
   // The form's defaults: a case that differs from them shows that the filled values are sent.
   const defaults = await page.locator(`#${section.id}-form`).evaluate(f => {
     f.reset();
-    return Object.fromEntries([...f.querySelectorAll('input[name], select[name]')].map(c => [c.getAttribute('name'), c.value]));
+    return Object.fromEntries([...f.querySelectorAll('input[name], select[name], textarea[name]')].map(c => [c.getAttribute('name'), c.value]));
   });
   const differs = c =>
     [...(leaves(c.request) ?? new Map())].some(

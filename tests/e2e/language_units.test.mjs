@@ -207,15 +207,22 @@ describe('the Russian page', () => {
 });
 
 // ------------------------------------------------------------------ inches
-// The section's inputs on the page (enabled named controls) with their label's unit.
+// The section's inputs on the page (enabled named controls; not a program's text area) with their
+// label's unit and URL key, then those of the page's machine profile (page-wide, data-page-wide:
+// keyed by their name alone, url_state.js), which the program sections are timed on.
 async function inputsWithUnits(page, id) {
-  return page.evaluate(
-    id =>
-      [...document.querySelectorAll(`#${id}-form [name^="/"]`)]
-        .filter(c => !c.disabled)
-        .map(c => [c.name, c.value, document.querySelector(`label[for="${c.id}"] [data-unit]`)?.dataset.unit ?? '']),
-    id,
-  );
+  return page.evaluate(id => {
+    const own = [...document.querySelectorAll(`#${id}-form :is(input, select)[name^="/"]`)];
+    const profile = [...document.querySelectorAll('[data-page-wide]')].filter(c => !own.includes(c));
+    return [...own, ...profile]
+      .filter(c => !c.disabled)
+      .map(c => [
+        c.name,
+        c.value,
+        document.querySelector(`label[for="${c.id}"] [data-unit]`)?.dataset.unit ?? '',
+        c.hasAttribute('data-page-wide') ? c.name.slice(1).replaceAll('/', '.') : `${id}${c.name.replaceAll('/', '.')}`,
+      ]);
+  }, id);
 }
 
 async function shownResults(page, id) {
@@ -289,11 +296,11 @@ describe('inches', () => {
         // The same inputs in inches: each length / 25.4 written with every digit.
         const query = new URLSearchParams({ units: 'inch' });
         let converted = 0;
-        for (const [name, text, unit] of inputs) {
+        for (const [, text, unit, key] of inputs) {
           // The program's units as in mm (an inch program is another request, tested below).
           const inches = unit in LENGTH_UNITS && text.trim() !== '' ? String(Number(text) / MM_PER_INCH ** LENGTH_UNITS[unit]) : text;
           converted += inches !== text ? 1 : 0;
-          query.append(`${id}${name.replaceAll('/', '.')}`, inches);
+          query.append(key, inches);
         }
         assert.ok(converted > 0, `${id}: no length input to convert`);
         inch = await openPage(`${PAGE_URL}?${query}#${id}`);

@@ -60,6 +60,13 @@ const SECTIONS = [
     edit: ['/steps', '6'],
     csv: { button: 'flat-steps-csv', table: true },
   },
+  {
+    // The program itself is not in the link (its text area): the control is.
+    id: 'program-time',
+    requests: { '/v1/program-time': 1 },
+    edit: ['/dialect', 'fanuc'],
+    csv: { button: 'program-time-slowest-csv', table: true },
+  },
 ];
 const byId = id => SECTIONS.find(s => s.id === id);
 // Sections here are optional, but each is a page section of the route table (cutcalc --routes).
@@ -115,10 +122,16 @@ async function typeInto(page, id, name, text, delay = 40) {
   await page.keyboard.type(text, { delay });
 }
 
-// A calculation asked for with Enter in a field, waited for until the page is quiet.
+// A calculation asked for with Enter in a field, waited for until the page is quiet; a select
+// (the program time's control) calculates on its change, after the page's pause.
 async function calculateWith(page, log, id, name, text) {
-  await typeInto(page, id, name, text, 0);
-  await page.keyboard.press('Enter');
+  const select = page.locator(`#${id}-form select[name="${name}"]`);
+  if ((await select.count()) === 1) {
+    await select.selectOption(text);
+  } else {
+    await typeInto(page, id, name, text, 0);
+    await page.keyboard.press('Enter');
+  }
   await settle(log);
 }
 

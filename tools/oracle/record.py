@@ -20,6 +20,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+sys.dont_write_bytecode = True  # no __pycache__ in the work tree
 sys.path.insert(0, HERE)
 import time_program  # noqa: E402
 
@@ -77,7 +78,8 @@ def main():
             cases.append(old[cid])
             continue
         runs = []
-        planned = args.runs
+        # a case known not to repeat (manifest "unstable") gets the extra runs at once
+        planned = args.runs + (args.extra_runs if entry.get("unstable") else 0)
         while len(runs) < planned:
             t0 = time.monotonic()
             try:

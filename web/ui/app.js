@@ -1,6 +1,8 @@
 // The calculator page: each section's form drives its endpoint(s); see index.html. The sections'
 // inputs live in the URL (url_state.js), so the page starts from it and calculates at once. The
-// static page takes the URL's language and units first, so that every form reads in them.
+// static page takes the URL's language and units first, so that every form reads in them. The
+// machine profile (machine.js) is edited in the Program time section and times the programs of
+// the other sections too: when it changes, they calculate again.
 
 import * as bore from './bore.js';
 import * as entry from './entry.js';
@@ -11,6 +13,7 @@ import { translatePage } from './i18n.js';
 import { wirePageHistory } from './page_history.js';
 import { wirePageSettings } from './page_settings.js';
 import * as polygon from './polygon.js';
+import * as programTime from './program_time.js';
 import { wirePrintSheets } from './print_sheet.js';
 import { wireSectionTools } from './section_tools.js';
 import * as speeds from './speeds.js';
@@ -18,8 +21,24 @@ import { applyUnitsToPage } from './units.js';
 
 translatePage();
 applyUnitsToPage();
-const calculators = [entry, speeds, groove, bore, polygon, grooving, flat].map((section) => section.init());
+const calculators = [entry, speeds, groove, bore, polygon, grooving, flat, programTime].map((section) =>
+  section.init(),
+);
+wireMachineProfile(calculators);
 wireSectionTools(calculators);
 wirePageHistory(calculators);
 wirePrintSheets(calculators);
 wirePageSettings(calculators);
+
+// An edit of the profile (a calculation of Program time the user asked for) is one of every section
+// timed on it: each calculates again if what it uses of the profile changed (url_state.js
+// signature), as after an edit of its own inputs. Loading and back/forward calculate every section
+// anyway (page_history.js).
+function wireMachineProfile(calculators) {
+  const profile = calculators.find((c) => c.id === 'program-time');
+  const timed = calculators.filter((c) => c !== profile && c.form.dataset.machine !== undefined);
+  profile.form.addEventListener('calculation-start', (event) => {
+    if (event.detail.cause !== 'input' && event.detail.cause !== 'submit') return;
+    for (const calculator of timed) calculator.calculate('input');
+  });
+}

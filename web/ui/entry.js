@@ -32,6 +32,7 @@ import {
   unitsPerPixel,
 } from './svg.js';
 import { t, tn } from './i18n.js';
+import { machineTimeLine, markTimed, postWithMachine } from './machine.js';
 import { csvUnit, fromApi, unitText } from './units.js';
 
 // " = 12.5 mm" for a dimension line: the length in the page's units.
@@ -47,6 +48,7 @@ export function init() {
   const result = document.getElementById('entry-result');
   const download = document.getElementById('entry-download');
   let programRequest = null; // the body of the last program that was written
+  form.dataset.machine = 'mill'; // the pass program is timed on the page's machine profile (a mill)
   wireContourFields(form);
   const calculator = onCalculate(form, async (api) => {
     // The pass program takes the main-time request plus the `program` options.
@@ -54,21 +56,23 @@ export function init() {
     // A program needs a straight path: with an extra path L1 the page does not ask for one.
     const extra = programBody.extra_path_mm;
     const straight = extra === undefined || (extra instanceof RawNumber && Number(extra.text) === 0);
-    const [length, time, program] = await Promise.all([
+    const [length, time, timed] = await Promise.all([
       api.postJson('/v1/entry-length', { ...readBody(form, LENGTH), include_scheme: true }),
       api.postJson('/v1/main-time', readBody(form, TIME)),
-      straight ? api.postJson(PROGRAM_PATH, programBody) : Promise.resolve(null),
+      straight ? postWithMachine(api, PROGRAM_PATH, programBody, 'mill', ['x', 'y', 'z']) : Promise.resolve(null),
     ]);
+    const program = timed?.answer ?? null;
+    markTimed(form, timed?.sent);
     if (!length.ok) showFailure(form, length, t('result.entry_length'));
     if (!time.ok) showFailure(form, time, t('result.main_time'));
     // The program repeats main-time's own errors: only its own are shown.
     if (time.ok && program && !program.ok) showFailure(form, program, t('result.program'));
-    programRequest = program?.ok ? programBody : null;
+    programRequest = program?.ok ? timed.sent : null;
     download.disabled = programRequest === null;
     result.replaceChildren();
     if (length.ok) result.append(...lengthResults(length, result));
     if (time.ok) result.append(...timeResults(time.json));
-    if (program?.ok) result.append(...programResults(program.json));
+    if (program?.ok) result.append(...programResults(program.json, timed.note));
     if (time.ok && !straight) {
       result.append(
         h('p', { class: 'source-note' }, tn('result.no_program_extra_path')),
@@ -85,7 +89,7 @@ export function init() {
 
 // ------------------------------------------------------------------ the program (main-time/program)
 
-function programResults(body) {
+function programResults(body, machineNote) {
   return [
     h('h3', {}, t('result.program')),
     h(
@@ -109,6 +113,7 @@ function programResults(body) {
       ],
       PROGRAM,
     ),
+    machineTimeLine(body, machineNote, PROGRAM),
     h(
       'p',
       { class: 'source-note' },

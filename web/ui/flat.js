@@ -20,6 +20,7 @@ import {
 } from './form.js';
 import { flatDiagrams } from './flat_diagram.js';
 import { t, tn } from './i18n.js';
+import { machineTimeLine, markTimed, postWithMachine } from './machine.js';
 import { csvUnit, unitText } from './units.js';
 
 const PATH = '/v1/lathe-flat';
@@ -41,10 +42,12 @@ export function init() {
   // The program's <pre> is part of the page from the start (hidden until there is a program).
   const program = document.getElementById('flat-program');
   let calculated = null; // the body of the last successful calculation
+  form.dataset.machine = 'lathe'; // timed on the page's machine profile when it is a lathe
 
   const calculator = onCalculate(form, async (api) => {
     const body = readBody(form);
-    const answer = await api.postJson(PATH, body);
+    const { answer, sent, note } = await postWithMachine(api, PATH, body, 'lathe', ['x', 'z', 'c']);
+    markTimed(form, sent);
     result.replaceChildren();
     if (!answer.ok) {
       calculated = null;
@@ -54,11 +57,11 @@ export function init() {
       result.append(h('p', { class: 'placeholder' }, t('result.no_results')), program);
       return;
     }
-    calculated = body;
+    calculated = sent;
     download.disabled = false;
     showProgram(program, answer.json);
     result.append(
-      ...flatResults(answer.json),
+      ...flatResults(answer.json, note),
       flatDiagrams(
         {
           partDiameter: Number(body.part_diameter_mm?.text),
@@ -80,7 +83,7 @@ export function init() {
 
 // Spec section 8, in the order a setter reads them: the flat, its steps and flatness, the blocks
 // and the time.
-function flatResults(body) {
+function flatResults(body, machineNote) {
   const depths = Array.isArray(body.layer_depths_mm) ? body.layer_depths_mm : [];
   const error = body.flatness_error_mm;
   return [
@@ -138,6 +141,7 @@ function flatResults(body) {
       [[t('result.flat_approach_time')], '/approach_time_min', 'min'],
       [[t('result.machining_time')], '/machining_time_min', 'min'],
     ]),
+    machineTimeLine(body, machineNote),
     h('p', { class: 'source-note' }, tn('result.flat_time_note')),
     warningList(body),
   ];

@@ -125,10 +125,12 @@ export function clearErrors(form) {
   box.hidden = true;
 }
 
-// The enabled control whose name is `pointer`, or the one holding the list element it points
-// into (/contact_angles_deg/1 belongs to the /contact_angles_deg list input).
+// The enabled control whose name is `pointer` (a text area too: the program of Program time), or
+// the one holding the list element it points into (/contact_angles_deg/1 belongs to the
+// /contact_angles_deg list input).
 function controlFor(form, pointer) {
-  const all = controls(form);
+  const areas = [...form.querySelectorAll('textarea[name^="/"]')].filter((a) => !a.disabled);
+  const all = [...controls(form), ...areas];
   const exact = all.find((c) => c.name === pointer);
   if (exact) return exact;
   const m = /^(.*)\/\d+$/.exec(pointer);

@@ -19,6 +19,7 @@ import {
 } from './form.js';
 import { groovingDiagrams } from './grooving_diagram.js';
 import { t, tn } from './i18n.js';
+import { machineTimeLine, markTimed, postWithMachine } from './machine.js';
 
 const PATH = '/v1/grooving/cycle';
 
@@ -33,11 +34,13 @@ export function init() {
   // The program's <pre> is part of the page from the start (hidden until there is a program).
   const program = document.getElementById('grooving-program');
   let calculated = null; // the body of the last successful calculation
+  form.dataset.machine = 'lathe'; // timed on the page's machine profile when it is a lathe
   wireContourFields(form);
 
   const calculator = onCalculate(form, async (api) => {
     const body = readBody(form);
-    const answer = await api.postJson(PATH, body);
+    const { answer, sent, note } = await postWithMachine(api, PATH, body, 'lathe', ['x', 'z']);
+    markTimed(form, sent);
     result.replaceChildren();
     if (!answer.ok) {
       calculated = null;
@@ -47,11 +50,11 @@ export function init() {
       result.append(h('p', { class: 'placeholder' }, t('result.no_results')), program);
       return;
     }
-    calculated = body;
+    calculated = sent;
     download.disabled = false;
     showProgram(program, answer.json);
     result.append(
-      ...cycleResults(answer.json),
+      ...cycleResults(answer.json, note),
       groovingDiagrams(
         {
           grooveWidth: Number(body.groove_width_mm?.text),
@@ -71,7 +74,7 @@ export function init() {
 }
 
 // Spec section 3.7, in the order a setter reads them: the cycle, its times, the wall and chip.
-function cycleResults(body) {
+function cycleResults(body, machineNote) {
   return [
     h('h3', {}, t('result.grooving_cycle')),
     valueList(body, [
@@ -110,6 +113,7 @@ function cycleResults(body) {
       [[t('result.retract_time')], '/retract_time_min', 'min'],
       [[t('result.cycle_time')], '/cycle_time_min', 'min'],
     ]),
+    machineTimeLine(body, machineNote),
     // The dwell as the program prints it: seconds, 3 decimals (spec 3.5).
     h(
       'p',

@@ -28,6 +28,7 @@ import {
   unitsPerPixel,
 } from './svg.js';
 import { t } from './i18n.js';
+import { machineTimeLine, markTimed, postWithMachine } from './machine.js';
 import { fromApi, unitText } from './units.js';
 
 const PATH = '/v1/polygon-hole/gcode';
@@ -39,10 +40,18 @@ export function init() {
   // The program's <pre> is part of the page from the start (hidden until there is a program).
   const program = document.getElementById('polygon-program');
   let calculated = null; // the body of the last successful calculation
+  form.dataset.machine = 'mill'; // timed on the page's machine profile when it is a mill
 
   const calculator = onCalculate(form, async (api) => {
     const body = withoutDefaultProgram(readBody(form));
-    const answer = await api.postJson(PATH, { ...body, include_geometry: true });
+    const { answer, sent, note } = await postWithMachine(
+      api,
+      PATH,
+      { ...body, include_geometry: true },
+      'mill',
+      body.synchronization === 'c_axis' ? ['x', 'y', 'z', 'c'] : ['x', 'y', 'z'],
+    );
+    markTimed(form, sent);
     result.replaceChildren();
     if (!answer.ok) {
       calculated = null;
@@ -55,17 +64,19 @@ export function init() {
       );
       return;
     }
-    calculated = body;
+    // The download asks for the same program (and machine time) without the geometry.
+    calculated = { ...sent };
+    delete calculated.include_geometry;
     download.disabled = false;
     showProgram(program, answer.json);
-    result.append(...programResults(answer, result), h('h3', {}, t('result.g_code')), program);
+    result.append(...programResults(answer, result, note), h('h3', {}, t('result.g_code')), program);
   });
 
   wireProgramDownload(download, form, PATH, () => calculated, 'polygon-hole.ngc');
   return calculator;
 }
 
-function programResults(answer, container) {
+function programResults(answer, container, machineNote) {
   const body = answer.json;
   const parts = [
     h('h3', {}, t('result.program_and_hole')),
@@ -93,6 +104,7 @@ function programResults(answer, container) {
       [[t('result.rapid_time')], '/rapid_time_min', 'min'],
       [[t('result.cycle_time')], '/cycle_time_min', 'min'],
     ]),
+    machineTimeLine(body, machineNote),
   );
   parts.push(warningList(body));
   const geometry = body.geometry;

@@ -2,11 +2,12 @@
 // Print (Ctrl+P) prints every section, one per page. The print rules in app.css (@media print)
 // hide the page's header, navigation, forms and buttons and show each section's sheet parts:
 // its inputs as a table before the results and, for a program, its header after them. The sheet
-// parts are rebuilt after each calculation, so they are the inputs of the results shown.
+// parts are rebuilt after each calculation, so they are the inputs of the results shown. A section
+// whose program is not in a <pre> gives its header itself (controller.sheetProgram()).
 
 import { h } from './form.js';
 import { t } from './i18n.js';
-import { inputsTable, linkLine, programHeader } from './sheet_content.js';
+import { inputsTable, linkLine, machineTable, programHeader } from './sheet_content.js';
 
 // The section being printed alone carries this attribute until the print dialog closes.
 const TARGET = 'data-print-target';
@@ -20,8 +21,16 @@ export function wirePrintSheets(calculators) {
     section.querySelector('.calc').before(inputs);
     section.append(program);
     form.addEventListener('calculated', () => {
-      inputs.replaceChildren(inputsTable(form), linkLine(id, form));
-      program.replaceChildren(...programHeader(section.querySelector('pre[data-file-name]')));
+      // A program timed on the page's machine profile (data-timed, machine.js) lists it too,
+      // unless the profile is part of the section's own inputs.
+      const profile = document.getElementById('program-time-machine');
+      const timed = form.hasAttribute('data-timed') && !form.contains(profile);
+      inputs.replaceChildren(
+        ...[inputsTable(form), timed ? machineTable() : null, linkLine(id, form)].filter(Boolean),
+      );
+      program.replaceChildren(
+        ...(controller.sheetProgram?.() ?? programHeader(section.querySelector('pre[data-file-name]'))),
+      );
     });
 
     const button = h('button', { type: 'button', id: `${id}-print` }, t('button.print_sheet'));

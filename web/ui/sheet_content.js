@@ -14,8 +14,19 @@ const FALLBACK_HEADER_LINES = 12;
 // The inputs of `form` as a table: one group per fieldset, a row per applicable field
 // (label with its symbol | value | unit); a field hidden because it does not apply is left out.
 export function inputsTable(form) {
-  const table = h('table', { class: 'sheet-inputs' }, h('caption', {}, t('sheet.inputs')));
-  for (const fieldset of form.querySelectorAll('fieldset')) {
+  return fieldsetTable([...form.querySelectorAll('fieldset')], t('sheet.inputs'), 'sheet-inputs');
+}
+
+// The machine profile a program section was timed on (machine.js): its own table, after the
+// section's inputs.
+export function machineTable() {
+  const profile = document.getElementById('program-time-machine');
+  return profile ? fieldsetTable([profile], t('sheet.machine'), 'sheet-machine') : null;
+}
+
+function fieldsetTable(fieldsets, caption, className) {
+  const table = h('table', { class: className }, h('caption', {}, caption));
+  for (const fieldset of fieldsets) {
     const rows = [...fieldset.querySelectorAll('.field')]
       .filter((field) => !field.hidden)
       .map(inputRow)
@@ -73,18 +84,33 @@ export function linkLine(id, form) {
 // the passes begin, spec programs.md), from the shown program `pre` (data-file-name).
 export function programHeader(pre) {
   if (!pre || pre.hidden || !pre.textContent) return [];
-  const lines = pre.textContent.split('\n');
+  return programHeaderOf(pre.textContent, pre.dataset.fileName ?? '');
+}
+
+// The same from a program's text (only its first lines are read: a program to time may be
+// megabytes) and its file name ('' when it has none: a pasted program).
+export function programHeaderOf(text, fileName) {
+  if (!text) return [];
+  const lines = firstLines(text, 200);
   const safe = lines.findIndex((line) => /^G0?0\b.*Z/.test(line.trim()));
   const header = lines.slice(0, safe >= 0 ? safe + 1 : FALLBACK_HEADER_LINES);
   return [
     h('h3', {}, t('sheet.program_header')),
-    h(
-      'p',
-      {},
-      t('sheet.file'),
-      ' ',
-      h('span', { class: 'sheet-file-name' }, pre.dataset.fileName ?? ''),
-    ),
+    fileName
+      ? h('p', {}, t('sheet.file'), ' ', h('span', { class: 'sheet-file-name' }, fileName))
+      : null,
     h('pre', { class: 'sheet-program-header' }, header.join('\n')),
-  ];
+  ].filter(Boolean);
+}
+
+function firstLines(text, count) {
+  const lines = [];
+  let start = 0;
+  while (lines.length < count && start <= text.length) {
+    const end = text.indexOf('\n', start);
+    lines.push(text.slice(start, end < 0 ? text.length : end).replace(/\r$/, ''));
+    if (end < 0) break;
+    start = end + 1;
+  }
+  return lines;
 }

@@ -9,12 +9,22 @@
 // in the URL lists every input of its request, so the link keeps its meaning when the page's
 // defaults change; a section not in the URL shows its defaults. Keys without a dot are page-wide
 // settings (lang, units: i18n.js, units.js); the page keeps them, and ignores keys it does
-// not know.
+// not know. The inputs of the page's machine profile (data-page-wide, machine.js) are page-wide
+// too: keyed by their name alone (machine.axes.x.max_velocity_mm_per_min), written into every
+// URL the page writes once they differ from their defaults. A <textarea> (a program to time) is
+// never in the URL.
 
 import { controls } from './form.js';
+import { pageWideControls, profileSignature } from './machine.js';
 
-const keyOf = (sectionId, pointer) => `${sectionId}${pointer.replaceAll('/', '.')}`;
+const isPageWide = (control) => control.hasAttribute('data-page-wide');
+const keyOf = (sectionId, control) =>
+  isPageWide(control)
+    ? control.name.slice(1).replaceAll('/', '.')
+    : `${sectionId}${control.name.replaceAll('/', '.')}`;
 const isPageSetting = (key) => !key.includes('.');
+// A section's own inputs (not those of the page-wide profile it may hold).
+const sectionControls = (form) => controls(form).filter((c) => !isPageWide(c));
 
 // The inputs of the form's request (its enabled named controls) as [name, text] pairs: the list
 // of a section's fields comes from the form itself.
@@ -22,9 +32,11 @@ export function fieldValues(form) {
   return controls(form).map((c) => [c.name, c.value]);
 }
 
-// A key for "the same inputs": a calculation is repeated only when this changes.
+// A key for "the same inputs": a calculation is repeated only when this changes. Besides the
+// form's inputs: its text areas (a program) and what of the machine profile the section uses.
 export function signature(form) {
-  return JSON.stringify(fieldValues(form));
+  const texts = [...form.querySelectorAll('textarea[name^="/"]')].map((area) => area.value);
+  return JSON.stringify([fieldValues(form), texts, profileSignature(form)]);
 }
 
 function defaultValue(control) {
@@ -34,15 +46,22 @@ function defaultValue(control) {
 }
 
 export function differsFromDefaults(form) {
-  return controls(form).some((c) => c.value !== defaultValue(c));
+  return sectionControls(form).some((c) => c.value !== defaultValue(c));
 }
 
 // `text` gives the text of a control to write (the value as typed, or as converted when the
 // units change).
 function appendSection(params, sectionId, form, text = (control) => control.value) {
-  for (const control of controls(form)) {
-    params.append(keyOf(sectionId, control.name), text(control));
+  for (const control of sectionControls(form)) {
+    params.append(keyOf(sectionId, control), text(control));
   }
+}
+
+// The machine profile, every input of it, once it differs from its defaults.
+function appendPageWide(params, text = (control) => control.value) {
+  const profile = pageWideControls();
+  if (!profile.some((c) => c.value !== defaultValue(c))) return;
+  for (const control of profile) params.append(keyOf('', control), text(control));
 }
 
 // The page-wide settings of the current URL, to carry into every URL the page writes.
@@ -64,6 +83,7 @@ function urlWith(params, sectionId) {
 // The link to one section's calculation (with the page-wide settings).
 export function sectionLink(sectionId, form) {
   const params = pageSettings();
+  appendPageWide(params);
   appendSection(params, sectionId, form);
   return urlWith(params, sectionId);
 }
@@ -72,6 +92,7 @@ export function sectionLink(sectionId, form) {
 // `sectionId`. sections = [{id, form}, ...].
 export function pageUrl(sections, sectionId) {
   const params = pageSettings();
+  appendPageWide(params);
   for (const { id, form } of sections) {
     if (differsFromDefaults(form)) appendSection(params, id, form);
   }
@@ -86,6 +107,7 @@ export function pageUrlWith(sections, settings, text) {
     params.delete(key);
     if (value !== null) params.append(key, value);
   }
+  appendPageWide(params, text);
   for (const { id, form } of sections) {
     if (differsFromDefaults(form)) appendSection(params, id, form, text);
   }
@@ -94,13 +116,16 @@ export function pageUrlWith(sections, settings, text) {
 
 // Sets the form to the section's inputs in `search` (a URL's query), its defaults where the URL
 // has none. A select keeps its default when the URL names no option of it. The selects are
-// announced (change events) so that the fields that depend on them are shown or hidden.
+// announced (change events) so that the fields that depend on them are shown or hidden. A text
+// area keeps its text (a program is not in the URL: back and forward do not lose it).
 export function applyToForm(form, sectionId, search) {
   const params = new URLSearchParams(search);
+  const texts = [...form.querySelectorAll('textarea')].map((area) => [area, area.value]);
   form.reset();
+  for (const [area, text] of texts) area.value = text;
   const selects = [...form.querySelectorAll('select[name^="/"]')];
   for (const control of form.querySelectorAll('input[name^="/"], select[name^="/"]')) {
-    const text = params.get(keyOf(sectionId, control.name));
+    const text = params.get(keyOf(sectionId, control));
     if (text === null) continue;
     const known = control.tagName !== 'SELECT' || [...control.options].some((o) => o.value === text);
     if (!known) continue;

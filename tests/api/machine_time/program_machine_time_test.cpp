@@ -127,6 +127,17 @@ TEST(ProgramMachineTime, AnAxisTheMachineLacksIsRefused) {
   EXPECT_EQ(parsed(response)["errors"][0]["axis"], "z");
 }
 
+TEST(ProgramMachineTime, PolygonSpindleSpeedPrintingAsZeroIsRefusedNotTimed) {
+  // Found by the property step: S0.0000 left the G95 blocks with no feed (a 500 with axes).
+  const Endpoint& polygon = kProgramEndpoints[1];
+  const EndpointProbe probe{polygon.path, polygon.handler};
+  json request = first_request(polygon.reference);
+  request["spindle_speed_rpm"] = 0.00001;
+  request["machine"] = mill_machine();
+  EXPECT_EQ(probe.codes(request), std::set<std::string>{"word_prints_as_zero"});
+  EXPECT_EQ(probe.pointers(request), std::set<std::string>{"/spindle_speed_rpm"});
+}
+
 TEST(ProgramMachineTime, MainTimeWritesNoProgramSoRefusesAxes) {
   const EndpointProbe probe{"/v1/main-time", &api::entry::handle_main_time};
   json request = first_request("main-time.json");

@@ -23,7 +23,8 @@ constexpr double kTol = 1e-9;
 constexpr double kMm = 25.4;
 
 struct Read {
-  std::vector<Move> moves;
+  std::vector<Move> moves;       // every move but the queue flushes (kept apart below)
+  std::vector<std::size_t> syncs;  // the lines of the flushes (MoveKind::sync)
   ReadSummary summary;
   std::optional<ReadError> error;
 };
@@ -36,7 +37,13 @@ Read read(std::string_view text, Dialect dialect = Dialect::linuxcnc,
   options.kind = kind;
   options.max_spindle_rpm = max_spindle_rpm;
   const auto result =
-      read_program(text, options, [&out](const Move& move) { out.moves.push_back(move); });
+      read_program(text, options, [&out](const Move& move) {
+        if (move.kind == MoveKind::sync) {
+          out.syncs.push_back(move.line);
+        } else {
+          out.moves.push_back(move);
+        }
+      });
   if (const auto* error = std::get_if<ReadError>(&result)) {
     out.error = *error;
   } else {
@@ -682,6 +689,28 @@ TEST(GcodeReader, MalformedWordsAreRefused) {
 
 TEST(GcodeReader, ErrorsCountLinesFromOneAcrossCrLf) {
   expect_refusal("G0 X1\r\n\r\n  G41\r\n", Refusal::cutter_compensation, 3, 3, "G41");
+}
+
+}  // namespace
+}  // namespace cutcalc::domain::machine_time
+
+namespace cutcalc::domain::machine_time {
+namespace {
+
+// machine-time.md M8: spindle, coolant and offset words flush the control's queue (LinuxCNC's task
+// waits for motion before them): the reader says where, before the block's own motion.
+TEST(GcodeReader, SpindleCoolantAndOffsetWordsFlushTheQueueBeforeTheBlocksMotion) {
+  std::vector<std::pair<MoveKind, std::size_t>> kinds;
+  ReadOptions options;
+  const auto result = read_program(
+      "G21 G90\nG54\nG0 X1\nS1000 M3\nF100 G1 X2\nM8 G1 X3\nG1 X4\nG43 H1 G0 Z5\nM5 M9\nM2\n",
+      options, [&](const Move& move) { kinds.emplace_back(move.kind, move.line); });
+  ASSERT_TRUE(std::holds_alternative<ReadSummary>(result));
+  const std::vector<std::pair<MoveKind, std::size_t>> expected = {
+      {MoveKind::sync, 2},  {MoveKind::rapid, 3}, {MoveKind::sync, 4}, {MoveKind::line, 5},
+      {MoveKind::sync, 6},  {MoveKind::line, 6},  {MoveKind::line, 7}, {MoveKind::sync, 8},
+      {MoveKind::rapid, 8}, {MoveKind::sync, 9}};
+  EXPECT_EQ(kinds, expected);
 }
 
 }  // namespace
