@@ -35,13 +35,13 @@ class SocketAddresses {
 struct ConnectionCounters {
   std::atomic<std::uint64_t> connections{0};
   std::atomic<std::uint64_t> requests{0};
-  std::atomic<std::uint64_t> rejected_requests{0};  // framing errors answered by the engine
-  std::atomic<std::uint64_t> request_timeouts{0};   // request_timeout exceeded (slowloris)
-  std::atomic<std::uint64_t> rejected_at_cap{0};    // 503: max_connections open
-  std::atomic<std::uint64_t> large_bodies_refused{0};  // 503: max_large_bodies being received
+  std::atomic<std::uint64_t> rejected_requests{0};       // framing errors answered by the engine
+  std::atomic<std::uint64_t> request_timeouts{0};        // request_timeout exceeded (slowloris)
+  std::atomic<std::uint64_t> rejected_at_cap{0};         // 503: max_connections open
+  std::atomic<std::uint64_t> large_bodies_refused{0};    // 503: max_large_bodies being received
   std::atomic<std::uint64_t> large_bodies_receiving{0};  // gauge: bodies over the default limit
-  std::atomic<std::uint64_t> epoll_failures{0};     // epoll_ctl refused; the connection closed
-  WorkPoolCounters calculations;                    // the calculation pool
+  std::atomic<std::uint64_t> epoll_failures{0};          // epoll_ctl refused; the connection closed
+  WorkPoolCounters calculations;                         // the calculation pool
   // Bytes the open connections hold in their buffers, as of the loops' last sweep (gauge): an idle
   // connection gives its buffers back, so this is about the connections busy now.
   std::atomic<std::uint64_t> buffer_bytes{0};

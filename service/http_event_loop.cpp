@@ -434,9 +434,8 @@ class EventLoopEngine::Loop {
         // Before the buffer check: an admitted large body may buffer more than the default.
         if (frame.head_bytes > 0 && !admit_large_body(connection, frame, unread)) {
           engine_.counters_.large_bodies_refused.fetch_add(1, std::memory_order_relaxed);
-          reject(connection, {503, "other large request bodies are being received",
-                              frame.method, frame.target, frame.origin,
-                              kLargeBodyRetryAfterSeconds});
+          reject(connection, {503, "other large request bodies are being received", frame.method,
+                              frame.target, frame.origin, kLargeBodyRetryAfterSeconds});
           return false;
         }
         const std::size_t cap = connection.buffer_limit > 0 ? connection.buffer_limit

@@ -60,7 +60,7 @@ struct EngineError {
   std::string_view method;  // empty when the request line was not read
   std::string_view target;
   std::string_view origin;  // the request's Origin field; empty when it was not read
-  int retry_after_s = 0;     // a 503 for a passing condition (Retry-After); 0: none
+  int retry_after_s = 0;    // a 503 for a passing condition (Retry-After); 0: none
 };
 
 // Where the server is in its life (README.md, "Restarts"):

@@ -125,8 +125,7 @@ bool parse_content_length(std::string_view value, bool& seen, std::uint64_t& len
 // Walks a chunked body from `pos` (RFC 9112 7.1). Sets the frame's wire and body sizes when the
 // last chunk and the trailer section are in; `decoded`, when given, receives the content.
 RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame frame,
-                           const HttpLimits& limits, std::size_t body_limit,
-                           std::string* decoded) {
+                           const HttpLimits& limits, std::size_t body_limit, std::string* decoded) {
   std::size_t framing = 0;  // chunk sizes, extensions, CRLFs and trailers
   std::size_t content = 0;
   std::size_t fields = 0;

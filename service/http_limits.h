@@ -62,7 +62,9 @@ struct HttpLimits {
   [[nodiscard]] std::size_t max_buffered_bytes(std::size_t body_limit) const {
     return 2 * max_head_bytes + body_limit;
   }
-  [[nodiscard]] std::size_t max_buffered_bytes() const { return max_buffered_bytes(max_body_bytes); }
+  [[nodiscard]] std::size_t max_buffered_bytes() const {
+    return max_buffered_bytes(max_body_bytes);
+  }
 };
 
 }  // namespace cutcalc::service

@@ -1,6 +1,6 @@
+#include "api/lathe_flat/lathe_flat_endpoint.h"
 #include "api/machine_time/program_machine_time.h"
 #include "api/program/machine_reader.h"
-#include "api/lathe_flat/lathe_flat_endpoint.h"
 
 #include <array>
 #include <utility>

@@ -14,7 +14,8 @@ nlohmann::json to_json(const domain::machine_time::ProgramTime& time);
 
 // The 422 of a refused program or an undescribed axis: at `program_pointer` (line, column, word)
 // or at /machine/axes (axis, line).
-Problem to_problem(const domain::machine_time::ReadError& error, const std::string& program_pointer);
+Problem to_problem(const domain::machine_time::ReadError& error,
+                   const std::string& program_pointer);
 Problem to_problem(const domain::machine_time::AxisNotDescribed& missing);
 
 }  // namespace cutcalc::api::machine_time

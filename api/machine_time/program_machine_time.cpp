@@ -42,8 +42,7 @@ void append_line(std::string& program, const std::string& line) {
 }  // namespace
 
 std::optional<Problem> add_machine_time(JsonWithText& answer,
-                                        const program::MachineRequest& machine,
-                                        Dialect dialect) {
+                                        const program::MachineRequest& machine, Dialect dialect) {
   if (!machine.timing) return std::nullopt;
   const std::string& text = answer.json.at("program").get_ref<const std::string&>();
   mt::ProgramTimeParams params;

@@ -29,7 +29,8 @@ HandlerOutcome handle_program_time(const nlohmann::json& body) {
   if (!in.has("program")) {
     in.add_error("program", ErrorCode::required);
   }
-  const auto dialect = dialect_of(in.optional_choice("dialect", {"linuxcnc", "fanuc", "sinumerik"}));
+  const auto dialect =
+      dialect_of(in.optional_choice("dialect", {"linuxcnc", "fanuc", "sinumerik"}));
   const program::MachineRequest machine = program::read_machine(in, program::MachineUse::timing);
   int profile_points = 0;
   if (in.has("profile_points")) {

@@ -1,6 +1,6 @@
+#include "api/polygon/polygon_hole_endpoint.h"
 #include "api/machine_time/program_machine_time.h"
 #include "api/program/machine_reader.h"
-#include "api/polygon/polygon_hole_endpoint.h"
 
 #include <utility>
 #include <vector>

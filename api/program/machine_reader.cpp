@@ -49,9 +49,9 @@ MachineRequest read_machine(ObjectReader& root, MachineUse use) {
   if (const auto kind = in.optional_choice("kind", {"mill", "lathe"})) {
     machine.kind = *kind == "lathe" ? mt::MachineKind::lathe : mt::MachineKind::mill;
   }
-  const double servo_period_ms = in.number_or(
-      "servo_period_ms", Bounds{kMinServoPeriodMs, true, kMaxServoPeriodMs, true, {}},
-      kDefaultServoPeriodMs);
+  const double servo_period_ms =
+      in.number_or("servo_period_ms", Bounds{kMinServoPeriodMs, true, kMaxServoPeriodMs, true, {}},
+                   kDefaultServoPeriodMs);
   ObjectReader axes = in.object("axes", axes_required);
   if (axes.present()) {
     mt::Machine timing;

@@ -132,7 +132,8 @@ void read_path_control(ObjectReader& program, model::ProgramOptions& options) {
     if (control.mode != model::PathMode::blend) {
       in.reject("tolerance_mm", ErrorCode::requires_field, {{"field", "mode: blend"}});
     } else {
-      control.tolerance_mm = in.optional_number("tolerance_mm", Bounds::positive(kMaxPathToleranceMm));
+      control.tolerance_mm =
+          in.optional_number("tolerance_mm", Bounds::positive(kMaxPathToleranceMm));
     }
   }
   in.reject_unknown_fields();

@@ -12,9 +12,9 @@
 namespace cutcalc::domain::machine_time {
 
 enum class TangentCheck {
-  refused,   // no blending at all (rotary motion, an exact stop, a reversal)
-  tangent,   // close enough to tangent: run through at the kink velocity
-  corner,    // a real corner: a blend arc or a parabolic blend may take it
+  refused,  // no blending at all (rotary motion, an exact stop, a reversal)
+  tangent,  // close enough to tangent: run through at the kink velocity
+  corner,   // a real corner: a blend arc or a parabolic blend may take it
 };
 
 // tpSetupTangent: may set prev's termination and both segments' kink properties.

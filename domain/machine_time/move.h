@@ -45,9 +45,9 @@ struct Feed {
   FeedMode mode = FeedMode::units_per_min;
   double value = 0.0;  // F converted to mm (per min or per rev) or 1/min
   // The spindle when the move starts (per_revolution): rev/min, or constant surface speed.
-  double spindle_rpm = 0.0;                // G97 S (0: spindle stopped)
-  double surface_speed_m_per_min = 0.0;    // G96 S in m/min; 0: G97 (constant rpm)
-  double max_spindle_rpm = 0.0;            // G96 clamp (G50 S, D, LIMS, or the machine's); 0: none
+  double spindle_rpm = 0.0;              // G97 S (0: spindle stopped)
+  double surface_speed_m_per_min = 0.0;  // G96 S in m/min; 0: G97 (constant rpm)
+  double max_spindle_rpm = 0.0;          // G96 clamp (G50 S, D, LIMS, or the machine's); 0: none
 };
 
 struct ArcGeometry {

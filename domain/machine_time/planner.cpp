@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "domain/machine_time/blend.h"
@@ -22,6 +23,20 @@ constexpr double kStopPeriods = 0.5;
 // After a queue flush (a dwell, a spindle or coolant word) the control's task loop sends the
 // next moves; the oracle measured a few milliseconds more than the dwell (machine-time.md 5).
 constexpr double kFlushLatencyS = 0.0035;
+
+// tcClampVelocityByLength (M6): no faster than the whole segment in `period`.
+void clamp_by_length(Segment& segment, double period) {
+  const double per_period = segment.target / period;
+  if (per_period < segment.maxvel) {
+    segment.maxvel = per_period;
+    if (per_period < segment.reqvel) {
+      if (segment.limit == Limit::feed || segment.limit == Limit::axis_velocity) {
+        segment.limit = Limit::segment_length;
+      }
+      segment.too_short = !segment.rapid;
+    }
+  }
+}
 
 void remove_kink(Segment& prev, Segment& next) {
   prev.kink_vel = -1.0;
@@ -115,15 +130,7 @@ void Planner::enqueue(Segment segment) {
     clock_s_ += kFlushLatencyS;
   }
   flushed_ = false;
-  // tcClampVelocityByLength: no faster than the whole segment in one servo period (M6).
-  const double per_period = segment.target / machine_.servo_period_s;
-  if (per_period < segment.maxvel) {
-    segment.maxvel = per_period;
-    if (per_period < segment.reqvel) {
-      segment.limit = Limit::segment_length;
-      segment.too_short = !segment.rapid;
-    }
-  }
+  clamp_by_length(segment, machine_.servo_period_s);
   if (!queue_.empty()) {
     Segment* prev = &queue_.back();
     // handleModeChange: a rapid never blends with a feed move.
@@ -175,14 +182,7 @@ void Planner::finalize(Segment& segment) const {
   if (segment.finalized) {
     return;
   }
-  const double per_period = segment.target / machine_.servo_period_s;
-  if (per_period < segment.maxvel) {
-    segment.maxvel = per_period;
-    if (per_period < segment.reqvel) {
-      segment.limit = Limit::segment_length;
-      segment.too_short = !segment.rapid;
-    }
-  }
+  clamp_by_length(segment, machine_.servo_period_s);
   if (segment.shape == Shape::arc) {
     // pmCircleActualMaxVel (M5): the normal acceleration v^2 / r takes at most sqrt(3)/2 of a.
     const double a = overall_accel(segment);
@@ -240,14 +240,7 @@ void Planner::optimize() {
         prev.at_max = true;
       }
       prev.finalvel = vs_back;
-      const double sample_max = tc.target / (machine_.servo_period_s * kMinSegmentCycles);
-      if (sample_max < tc.maxvel) {
-        tc.maxvel = sample_max;
-        if (sample_max < tc.reqvel && tc.limit == Limit::feed) {
-          tc.limit = Limit::segment_length;
-          tc.too_short = !tc.rapid;
-        }
-      }
+      clamp_by_length(tc, machine_.servo_period_s * kMinSegmentCycles);
     }
     if (tc.at_max && ++hit_peaks > kOptimizationCutoffPeaks) {
       return;
@@ -256,8 +249,7 @@ void Planner::optimize() {
 }
 
 void Planner::execute_front() {
-  Segment tc = std::move(queue_.front());
-  queue_.pop_front();
+  Segment tc = queue_.take_front();
   const Segment* next = queue_.empty() ? nullptr : &queue_.front();
   const double v_target = target_velocity(tc);
   const double accel = tangential_accel(tc);
@@ -287,7 +279,7 @@ void Planner::execute_front() {
   double overlap_s = 0.0;
   if (tc.term == Termination::parabolic && next != nullptr && accel > 0.0) {
     const ParabolicBlend blend = parabolic_blend(tc, *next, v_target, target_velocity(*next));
-    const double decel_s = profile.duration_s - profile.accel_s - profile.cruise_s;
+    const double decel_s = std::max(profile.duration_s - profile.accel_s - profile.cruise_s, 0.0);
     overlap_s = std::clamp(std::min(blend.v_this, profile.v_peak) / accel, 0.0, decel_s);
   }
 

@@ -47,7 +47,7 @@ struct ProgramTime {
   std::size_t moves = 0;
   double feed_length_mm = 0.0;
   double rapid_length_mm = 0.0;
-  double rotary_deg = 0.0;  // rotary-only moves
+  double rotary_deg = 0.0;                // rotary-only moves
   std::vector<SlowBlock> slowest_blocks;  // most time lost first
   std::vector<program::Warning> warnings;
   std::vector<ProfilePoint> profile;

@@ -33,21 +33,21 @@ enum class Limit : std::uint8_t {
 struct Segment {
   Shape shape = Shape::line;
   bool rapid = false;
-  bool rotary = false;       // A, B or C move: no tangency check, no blend arc (tcRotaryMotionCheck)
+  bool rotary = false;  // A, B or C move: no tangency check, no blend arc (tcRotaryMotionCheck)
   bool pure_rotary = false;  // only rotary axes move: degrees, no trajectory maximum
   bool synced = false;       // feed per revolution (TC_SYNC_VELOCITY): the feed follows the spindle
   std::size_t line = 0;      // the block it comes from (a blend arc: the block before it)
 
-  double target = 0.0;          // length still to run
-  double nominal_length = 0.0;  // as programmed
-  double reqvel = 0.0;          // the programmed feed, capped by the axes
-  double maxvel = 0.0;          // the axes' cap (and later the arc and length caps)
-  double maxaccel = 0.0;        // along the path
-  double feed_cap = 0.0;        // the programmed feed alone (0 for rapids), for the reports
+  double target = 0.0;            // length still to run
+  double nominal_length = 0.0;    // as programmed
+  double reqvel = 0.0;            // the programmed feed, capped by the axes
+  double maxvel = 0.0;            // the axes' cap (and later the arc and length caps)
+  double maxaccel = 0.0;          // along the path
+  double feed_cap = 0.0;          // the programmed feed alone (0 for rapids), for the reports
   double nominal_velocity = 0.0;  // M1: the feed capped by the axes (no arc or length caps)
 
   Termination term = Termination::parabolic;
-  double tolerance = 0.0;  // G64 P; 0: none
+  double tolerance = 0.0;   // G64 P; 0: none
   bool blend_prev = false;  // the previous segment blends parabolically into this one
   double kink_vel = -1.0;
   double kink_accel_reduce = 0.0;

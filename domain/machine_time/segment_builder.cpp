@@ -241,8 +241,7 @@ std::optional<Segment> build_arc(const Move& move, const Machine& machine) {
     segment.limit = Limit::arc;
   }
   // M1 caps the feed by the axes' velocities only, not by the arc's normal acceleration.
-  const double v_axes_only =
-      length / std::max(straight.velocity_time, spiral_length / v_axes);
+  const double v_axes_only = length / std::max(straight.velocity_time, spiral_length / v_axes);
   segment.nominal_velocity =
       move.kind == MoveKind::rapid ? v_axes_only : std::min(segment.feed_cap, v_axes_only);
   const double rise_per_radian = height / angle;

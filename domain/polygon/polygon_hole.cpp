@@ -149,9 +149,9 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
                             ? params.spindle_speed_rpm * result.feed_per_rev_mm
                             : result.feed_per_rev_mm;
     const std::string s_word =
-        params.program ? program::spindle_text(params.spindle_speed_rpm, params.program->dialect,
-                                               decimals)
-                       : detail::fmt4(params.spindle_speed_rpm);
+        params.program
+            ? program::spindle_text(params.spindle_speed_rpm, params.program->dialect, decimals)
+            : detail::fmt4(params.spindle_speed_rpm);
     if (program::prints_as_zero(s_word) ||
         program::prints_as_zero(program::format_fixed(feed * per_mm, decimals))) {
       return make_error(ErrorCode::word_prints_as_zero, "S or F");

@@ -192,9 +192,9 @@ std::string path_control_lines(const ProgramOptions& options) {
       return cat({"G64 P", tolerance(), "\n"});
     case Dialect::fanuc:
       return cat({"G64\n", comment_line("BLEND TOLERANCE " + tolerance() +
-                                             (options.units == Units::inch ? " IN" : " MM") +
-                                             " IS SET IN THE CONTROL PARAMETERS",
-                                         Dialect::fanuc)});
+                                            (options.units == Units::inch ? " IN" : " MM") +
+                                            " IS SET IN THE CONTROL PARAMETERS",
+                                        Dialect::fanuc)});
     case Dialect::sinumerik:
       return cat({"G641 ADIS=", tolerance(), "\n"});
   }

@@ -29,7 +29,7 @@ import { mkdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 
 import { chromiumForThisFile, repo } from './browser.mjs';
-import { API, ARTIFACT_DIR, PAGE_URL, TEST_MS, assertClean, openRecordedPage, settle } from './page_session.mjs';
+import { API, ARTIFACT_DIR, PAGE_URL, TEST_MS, WAIT_MS, assertClean, openRecordedPage, settle } from './page_session.mjs';
 
 const PATH = '/v1/program-time';
 const MM_PER_INCH = 25.4;
@@ -72,15 +72,30 @@ async function shown(page, id) {
   );
 }
 
-// Puts a program into the text area as a paste does (the text, one input event), then waits.
-async function paste(page, log, text) {
-  await page.locator('#program-time-program').evaluate((area, text) => {
-    area.focus();
-    area.select();
-    area.value = text;
-    area.dispatchEvent(new InputEvent('input', { bubbles: true, inputType: 'insertFromPaste' }));
-  }, text);
+// Runs `action` (an edit of the section), waits for the section's next request (it follows the
+// page's pause after an edit; a large program takes longer to send), then for the page to settle.
+async function recalculated(log, action) {
+  const before = log.exchanges.filter(e => e.path === PATH).length;
+  await action();
+  const deadline = Date.now() + WAIT_MS;
+  while (log.exchanges.filter(e => e.path === PATH).length === before) {
+    assert.ok(Date.now() < deadline, `no ${PATH} request within ${WAIT_MS} ms of the edit`);
+    await new Promise(resolve => setTimeout(resolve, 50));
+  }
   await settle(log);
+}
+
+// Puts a program into the text area as a paste does (the text, one input event), then waits for
+// its calculation.
+async function paste(page, log, text) {
+  await recalculated(log, () =>
+    page.locator('#program-time-program').evaluate((area, text) => {
+      area.focus();
+      area.select();
+      area.value = text;
+      area.dispatchEvent(new InputEvent('input', { bubbles: true, inputType: 'insertFromPaste' }));
+    }, text),
+  );
 }
 
 const SQUARE_WITH_PARAMETER = 'G21 G90 G17 G64\nF3000\nG1 X10\nG1 X#1 Y5\nM2\n';
@@ -223,11 +238,12 @@ describe('program time', () => {
     try {
       await settle(log);
       const program = 'G21 G90 G17 G61.1\r\nG0 X80\r\nG4 P0.5\r\nM2\r\n';
-      await page.locator('#program-time-file').setInputFiles({ name: 'part.ngc', mimeType: 'text/plain', buffer: Buffer.from(program) });
+      await recalculated(log, () =>
+        page.locator('#program-time-file').setInputFiles({ name: 'part.ngc', mimeType: 'text/plain', buffer: Buffer.from(program) }),
+      );
       // A text area holds LF line ends (the API ignores a CR before LF anyway).
       const text = program.replaceAll('\r\n', '\n');
-      await page.waitForFunction(text => document.getElementById('program-time-program').value === text, text);
-      await settle(log);
+      assert.equal(await page.locator('#program-time-program').inputValue(), text, 'the file is in the text area');
       const e = lastOf(log, PATH);
       assert.equal(JSON.parse(e.body).program, text, 'the file\'s text is sent');
       assert.equal(e.status, 200);
@@ -252,8 +268,7 @@ describe('program time', () => {
       const polygonBefore = lastOf(log, '/v1/polygon-hole/gcode');
       assert.ok(polygonBefore.json.machine_time, 'the polygon program is timed on the router');
       assert.equal(JSON.parse(polygonBefore.body).machine.axes.x.max_velocity_mm_per_min, 12000);
-      await page.locator('#program-time-machine-preset').selectOption('hobby_router');
-      await settle(log);
+      await recalculated(log, () => page.locator('#program-time-machine-preset').selectOption('hobby_router'));
       const after = lastOf(log, PATH);
       assert.notEqual(after, before, 'the preset asks again');
       const machine = JSON.parse(after.body).machine;
@@ -278,8 +293,7 @@ describe('program time', () => {
       assert.equal(url.searchParams.get('machine.kind'), 'mill');
       assert.ok(![...url.searchParams.keys()].some(k => k.includes('program.') || k.endsWith('.program')), 'no program in the URL');
       // A velocity typed in: Custom.
-      await page.locator(`#program-time-form [name="${VX}"]`).fill('2500');
-      await settle(log);
+      await recalculated(log, () => page.locator(`#program-time-form [name="${VX}"]`).fill('2500'));
       assert.equal(await page.locator('#program-time-machine-preset').inputValue(), '', 'an edited profile is Custom');
       assert.equal(JSON.parse(lastOf(log, PATH).body).machine.axes.x.max_velocity_mm_per_min, 2500);
       const estimate = lastOf(log, PATH).json.estimated_time_min;
@@ -293,10 +307,9 @@ describe('program time', () => {
       assert.equal(await second.page.locator(`#program-time-form [name="${VX}"]`).inputValue(), '2500');
       assert.equal(await second.page.locator('#program-time-machine-preset').inputValue(), '');
       assert.equal(lastOf(second.log, PATH).json.estimated_time_min, estimate, 'the same estimate');
-      // Back: the router again, the program kept.
+      // Back: the hobby router again, the program in the text area kept.
       await paste(page, log, 'G21 G90 G17 G61.1\nG0 X80\nM2\n');
-      await page.goBack();
-      await settle(log);
+      await recalculated(log, () => page.goBack());
       assert.equal(await page.locator(`#program-time-form [name="${VX}"]`).inputValue(), '3000', 'back: the hobby router');
       assert.equal(await page.locator('#program-time-program').inputValue(), 'G21 G90 G17 G61.1\nG0 X80\nM2\n', 'back keeps the program');
       await assertClean(page, log, 'profile (first page)');
@@ -312,8 +325,7 @@ describe('program time', () => {
     try {
       await settle(log);
       log.expectProblems = true; // the square moves Y, which a lathe lacks: refused, at its input
-      await page.locator('#program-time-machine-preset').selectOption('lathe');
-      await settle(log);
+      await recalculated(log, () => page.locator('#program-time-machine-preset').selectOption('lathe'));
       assert.equal(lastOf(log, PATH).status, 422);
       const yError = await page.locator('#program-time-machine-axes-y-max_velocity_mm_per_min-error').textContent();
       assert.match(yError, /\by\b/, `the missing axis Y is named at its input: ${yError}`);
@@ -425,8 +437,7 @@ describe('program time', () => {
       const typed = await page.locator(`#program-time-form [name="${VX}"]`).inputValue();
       assert.equal(Number(typed), Number((12000 / MM_PER_INCH).toPrecision(5)), 'the router\'s 12 m/min in in/min');
       assert.equal(await page.locator('#program-time-machine-preset').inputValue(), 'router', 'still the router preset');
-      await page.locator(`#program-time-form [name="${VX}"]`).fill('100');
-      await settle(log);
+      await recalculated(log, () => page.locator(`#program-time-form [name="${VX}"]`).fill('100'));
       const sent = JSON.parse(lastOf(log, PATH).body).machine.axes.x.max_velocity_mm_per_min;
       assert.ok(Math.abs(sent - 2540) < 1e-9, `100 in/min is sent as ${sent} mm/min`);
       assert.equal(new URL(page.url()).searchParams.get('machine.axes.x.max_velocity_mm_per_min'), '100', 'the link keeps the text as typed');

@@ -102,9 +102,8 @@ TEST(LargeBody, OneMoreThanTheCapIsRefusedBeforeItsBodyAndThePlaceComesBack) {
   // Every place is taken once the server has read those heads (the gauge says so); then the
   // next one is refused from its head.
   const service::ConnectionCounters& counters = TestServer::shared().app().counters();
-  ASSERT_TRUE(eventually([&] {
-    return counters.large_bodies_receiving.load() == limits.max_large_bodies;
-  }));
+  ASSERT_TRUE(eventually(
+      [&] { return counters.large_bodies_receiving.load() == limits.max_large_bodies; }));
   const ParsedResponses parsed = exchange(head(10'000'000), 5000);
   ASSERT_EQ(parsed.finals(), 1U) << parsed.error.value_or("");
   const HttpResponse& refused = parsed.responses.back();

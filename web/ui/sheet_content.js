@@ -21,10 +21,11 @@ export function inputsTable(form) {
 // section's inputs.
 export function machineTable() {
   const profile = document.getElementById('program-time-machine');
-  return profile ? fieldsetTable([profile], t('sheet.machine'), 'sheet-machine') : null;
+  return profile ? fieldsetTable([profile], t('sheet.machine'), 'sheet-machine', false) : null;
 }
 
-function fieldsetTable(fieldsets, caption, className) {
+// A table of the fields of `fieldsets`, a group per fieldset headed by its legend (`legends`).
+function fieldsetTable(fieldsets, caption, className, legends = true) {
   const table = h('table', { class: className }, h('caption', {}, caption));
   for (const fieldset of fieldsets) {
     const rows = [...fieldset.querySelectorAll('.field')]
@@ -33,9 +34,8 @@ function fieldsetTable(fieldsets, caption, className) {
       .filter(Boolean);
     if (rows.length === 0) continue;
     const legend = fieldset.querySelector('legend')?.textContent ?? '';
-    table.append(
-      h('tbody', {}, h('tr', {}, h('th', { colspan: 3, scope: 'colgroup' }, legend)), rows),
-    );
+    const heading = legends ? h('tr', {}, h('th', { colspan: 3, scope: 'colgroup' }, legend)) : null;
+    table.append(h('tbody', {}, heading, rows));
   }
   return table;
 }

@@ -36,13 +36,15 @@ json mill_machine() {
 }
 
 json lathe_machine() {
-  return {{"axes", {{"x", axis(10000, 1500)}, {"z", axis(12000, 1500)}, {"c", axis(21600, 3600, true)}}},
+  return {{"axes",
+           {{"x", axis(10000, 1500)}, {"z", axis(12000, 1500)}, {"c", axis(21600, 3600, true)}}},
           {"max_spindle_rpm", 4000}};
 }
 
 // The first reference request of `file` that the endpoint answers 200.
 json first_request(const std::string& file) {
-  const json document = load_reference(file);  // kept: a range-for over a temporary's member dangles
+  const json document =
+      load_reference(file);  // kept: a range-for over a temporary's member dangles
   for (const json& c : document.at("cases")) {
     if (c.at("expect").value("status", 200) == 200) return c.at("request");
   }
@@ -170,7 +172,8 @@ TEST(ProgramPathControl, StatesTheModeAfterTheWorkOffsetInEachDialect) {
                 .find("G54\nG64 P0.0200\n"),
             std::string::npos);
   EXPECT_NE(with_control("fanuc", {{"mode", "exact_stop"}}).find("G54\nG61\n"), std::string::npos);
-  const std::string fanuc_blend = with_control("fanuc", {{"mode", "blend"}, {"tolerance_mm", 0.02}});
+  const std::string fanuc_blend =
+      with_control("fanuc", {{"mode", "blend"}, {"tolerance_mm", 0.02}});
   EXPECT_NE(fanuc_blend.find("G54\nG64\n(BLEND TOLERANCE 0.020 MM"), std::string::npos)
       << fanuc_blend;
   EXPECT_NE(with_control("sinumerik", {{"mode", "exact_stop"}}).find("G54\nG60\n"),
@@ -206,8 +209,7 @@ TEST(ProgramPathControl, ToleranceOnlyWithBlend) {
   const EndpointProbe probe{pass.path, pass.handler};
   json request = first_request(pass.reference);
   request["program"] = {{"path_control", {{"mode", "exact_stop"}, {"tolerance_mm", 0.1}}}};
-  EXPECT_EQ(probe.pointers(request),
-            std::set<std::string>{"/program/path_control/tolerance_mm"});
+  EXPECT_EQ(probe.pointers(request), std::set<std::string>{"/program/path_control/tolerance_mm"});
   request["program"] = {{"path_control", {{"tolerance_mm", 0.1}}}};
   EXPECT_EQ(probe.pointers(request), std::set<std::string>{"/program/path_control/mode"});
 }

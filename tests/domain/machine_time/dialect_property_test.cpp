@@ -55,7 +55,8 @@ Texts random_program(std::mt19937& random, bool exact_stop) {
       // A half circle about a centre 5 mm off in X: I/J relative to the start in every dialect.
       const double ex = x + 10.0;
       const std::string g = k == 2 ? "G2" : "G3";
-      const std::string block = g + " X" + number(ex) + " Y" + number(y) + " I5.000 J0.000" + f + "\n";
+      const std::string block =
+          g + " X" + number(ex) + " Y" + number(y) + " I5.000 J0.000" + f + "\n";
       t.linuxcnc += block;
       t.fanuc += block;
       t.sinumerik += block;
@@ -73,7 +74,8 @@ TEST(DialectProperty, TheSameMotionGetsTheSameEstimateInEveryDialect) {
   for (int trial = 0; trial < 60; ++trial) {
     const Texts t = random_program(random, trial % 2 == 0);
     const double linuxcnc = test::time_of(t.linuxcnc).estimated_s;
-    const double fanuc = test::time_of(t.fanuc, test::router(), program::Dialect::fanuc).estimated_s;
+    const double fanuc =
+        test::time_of(t.fanuc, test::router(), program::Dialect::fanuc).estimated_s;
     const double sinumerik =
         test::time_of(t.sinumerik, test::router(), program::Dialect::sinumerik).estimated_s;
     if (trial % 2 == 0) {

@@ -20,10 +20,9 @@ namespace {
 using program::Dialect;
 
 constexpr double kTol = 1e-9;
-constexpr double kMm = 25.4;
 
 struct Read {
-  std::vector<Move> moves;       // every move but the queue flushes (kept apart below)
+  std::vector<Move> moves;         // every move but the queue flushes (kept apart below)
   std::vector<std::size_t> syncs;  // the lines of the flushes (MoveKind::sync)
   ReadSummary summary;
   std::optional<ReadError> error;
@@ -36,14 +35,13 @@ Read read(std::string_view text, Dialect dialect = Dialect::linuxcnc,
   options.dialect = dialect;
   options.kind = kind;
   options.max_spindle_rpm = max_spindle_rpm;
-  const auto result =
-      read_program(text, options, [&out](const Move& move) {
-        if (move.kind == MoveKind::sync) {
-          out.syncs.push_back(move.line);
-        } else {
-          out.moves.push_back(move);
-        }
-      });
+  const auto result = read_program(text, options, [&out](const Move& move) {
+    if (move.kind == MoveKind::sync) {
+      out.syncs.push_back(move.line);
+    } else {
+      out.moves.push_back(move);
+    }
+  });
   if (const auto* error = std::get_if<ReadError>(&result)) {
     out.error = *error;
   } else {

@@ -69,7 +69,8 @@ TEST(LinuxCncOracle, EveryRecordedProgramIsWithinTheGoal) {
     ProgramTimeParams params;
     params.program = program;
     params.read.dialect = dialect_of(c.value("dialect", "linuxcnc"));
-    params.read.kind = profile.value("kind", "mill") == "lathe" ? MachineKind::lathe : MachineKind::mill;
+    params.read.kind =
+        profile.value("kind", "mill") == "lathe" ? MachineKind::lathe : MachineKind::mill;
     params.read.max_spindle_rpm = profile.value("max_spindle_rpm", 0.0);
     params.machine = machine_of(profile);
     const ProgramTimeOutcome outcome = time_program(params);

@@ -93,7 +93,8 @@ TEST(Planner, ShortSegmentsRunAtOneSegmentPerServoPeriod) {
   for (int i = 1; i <= 4; ++i) program += "G1 X" + std::to_string(0.05 * i) + "\n";
   const ProgramTime time = time_of(program);
   bool warned = false;
-  for (const auto& w : time.warnings) warned = warned || w.code == program::WarningCode::segment_too_short;
+  for (const auto& w : time.warnings)
+    warned = warned || w.code == program::WarningCode::segment_too_short;
   EXPECT_TRUE(warned);
   EXPECT_GT(time.estimated_s, 4 * (0.05 / 50.0));
 }
@@ -116,8 +117,8 @@ TEST(Planner, BlendWithoutToleranceShortensTheSquare) {
 }
 
 TEST(Planner, ProfileStartsAndEndsAtRestAndPeaksAtTheFeed) {
-  const ProgramTime time = time_of("G21 G90 G61.1\nG0 X80\nM2\n", router(),
-                                   program::Dialect::linuxcnc, 101);
+  const ProgramTime time =
+      time_of("G21 G90 G61.1\nG0 X80\nM2\n", router(), program::Dialect::linuxcnc, 101);
   ASSERT_EQ(time.profile.size(), 101U);
   EXPECT_NEAR(time.profile.front().velocity_per_s, 0.0, 1e-9);
   EXPECT_NEAR(time.profile.back().t_s, time.estimated_s, 1e-12);
