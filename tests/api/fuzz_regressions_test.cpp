@@ -74,14 +74,22 @@ TEST(FuzzRegression, EntrySchemeBandOfAnArcIsSignedFrameY) {
 // answer) and a 1 km triangle at 1e-6 rpm in c_axis mode (1483 blocks a loop), took over the
 // harness's 5 s per-input limit in the sanitized, coverage-instrumented build with its oracle (the
 // release service answers them in 0.13 s and 0.03 s). Not hangs: the per-input limit is now 30 s.
-// Pinned: both are answered 200 with a whole program under the size cap, never a 500.
+// Pinned: both are answered 200 with a whole program under the size cap, never a 500. At 1e-6 rpm
+// the S word printed as S0.0000 (a spindle that never turns: the machine-time property step found
+// its G95 blocks without feed), now refused (word_prints_as_zero); 1e-4 rpm is the slowest spindle
+// the program can state.
 TEST(FuzzRegression, PolygonProgramsAtTheEdgeOfTheBoundsAreAnswered) {
   const char* requests[] = {
       R"({"depth_mm": 360.0, "faces": 3, "inscribed_diameter_mm": 72060,
           "spindle_speed_rpm": 31.5, "step_down_mm": 3.1})",
       R"({"depth_mm": 0.2, "faces": 3, "inscribed_diameter_mm": 999999.9999999999,
-          "spindle_speed_rpm": 1.0000000000000002e-06, "step_down_mm": 180.0,
+          "spindle_speed_rpm": 1e-04, "step_down_mm": 180.0,
           "synchronization": "c_axis"})"};
+  const auto refused = run("/v1/polygon-hole/gcode", R"({"depth_mm": 0.2, "faces": 3,
+      "inscribed_diameter_mm": 999999.9999999999, "spindle_speed_rpm": 1.0000000000000002e-06,
+      "step_down_mm": 180.0, "synchronization": "c_axis"})");
+  EXPECT_EQ(refused.status, 422) << refused.body;
+  EXPECT_NE(refused.body.find("word_prints_as_zero"), std::string::npos) << refused.body;
   for (const char* request : requests) {
     const auto response = run("/v1/polygon-hole/gcode", request);
     ASSERT_EQ(response.status, 200) << request;
