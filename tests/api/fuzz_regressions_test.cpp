@@ -12,6 +12,7 @@
 
 #include "api/json_endpoint.h"
 #include "api/routes.h"
+#include "support/quantity_keys.h"
 
 namespace cutcalc::testing {
 namespace {
@@ -126,6 +127,26 @@ TEST(FuzzRegression, LatheFlatBelowTheResolutionOfThePartIsRefused) {
   expect_field_error(run("/v1/lathe-flat", R"({"part_diameter_mm": 1000000,
     "flat_depth_mm": 0.000001, "steps": 4, "feed_mm_per_min": 170})"),
                      "");
+}
+
+}  // namespace
+}  // namespace cutcalc::testing
+
+namespace cutcalc::testing {
+namespace {
+
+// program_time_fuzzer (its first run): a square blended without a tolerance is shorter than
+// programmed, so its dynamics_time_min (T_e - T_n) is negative, as machine-time.md section 6
+// says; the oracle took every *_min for a time that cannot be negative
+// (support/quantity_keys.h now lists it as signed).
+TEST(FuzzRegression, BlendedSquareLosesNegativeTimeToDynamics) {
+  const auto response = run("/v1/program-time", R"({"program":
+      "G21 G90 G17 G64\nF4000\nG1 X60\nG1 Y60\nG1 X0\nG1 Y0\nM2\n", "machine": {"axes": {
+      "x": {"max_velocity_mm_per_min": 12000, "max_acceleration_mm_per_s2": 1000},
+      "y": {"max_velocity_mm_per_min": 12000, "max_acceleration_mm_per_s2": 1000}}}})");
+  ASSERT_EQ(response.status, 200) << response.body;
+  EXPECT_LT(nlohmann::json::parse(response.body).at("dynamics_time_min").get<double>(), 0.0);
+  EXPECT_FALSE(test_support::is_non_negative_quantity("dynamics_time_min"));
 }
 
 }  // namespace
