@@ -277,6 +277,11 @@ constexpr std::array kCatalogue{
     Entry{ErrorCode::uploads_busy,
           "the server is receiving other large programs; retry after {retry_after_s} s",
           "сервер принимает другие большие программы; повторите через {retry_after_s} с"},
+    Entry{ErrorCode::calculation_timeout,
+          "the calculation took longer than the server allows and was stopped; retry after "
+          "{retry_after_s} s",
+          "расчёт занял больше времени, чем допускает сервер, и был остановлен; повторите через "
+          "{retry_after_s} с"},
     Entry{ErrorCode::internal_error, "an internal error occurred (a bug in cutcalc); it was logged",
           "внутренняя ошибка (ошибка в cutcalc); она записана в журнал"},
 };

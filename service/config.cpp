@@ -22,6 +22,7 @@ constexpr std::array kSettings = {
     Setting{"--cors-origin", "CUTCALC_CORS_ORIGINS"},
     Setting{"--calculation-threads", "CUTCALC_CALCULATION_THREADS"},
     Setting{"--calculation-queue", "CUTCALC_CALCULATION_QUEUE"},
+    Setting{"--calculation-timeout-ms", "CUTCALC_CALCULATION_TIMEOUT_MS"},
     Setting{"--reuse-port", "CUTCALC_REUSE_PORT"},
     Setting{"--keep-alive-timeout-s", "CUTCALC_KEEP_ALIVE_TIMEOUT_S"},
     Setting{"--lame-duck-ms", "CUTCALC_LAME_DUCK_MS"},
@@ -92,6 +93,12 @@ std::string apply(Config& config, std::string_view flag, const std::string& valu
       return "--calculation-queue must be an integer 1..100000, got '" + value + "'";
     }
     config.http.calculation_queue_limit = static_cast<std::size_t>(*queue);
+  } else if (flag == "--calculation-timeout-ms") {
+    const auto ms = parse_long(value, 1, 3600000);
+    if (!ms) {
+      return "--calculation-timeout-ms must be an integer 1..3600000, got '" + value + "'";
+    }
+    config.http.limits.calculation_timeout = std::chrono::milliseconds(*ms);
   } else if (flag == "--keep-alive-timeout-s") {
     const auto seconds = parse_long(value, 1, 3600);
     if (!seconds) {
@@ -136,7 +143,8 @@ std::string usage() {
   return std::string(
       "usage: cutcalc [--host H] [--port P] [--threads N] [--log-level L] [--log-format F]\n"
       "               [--cors-origin ORIGIN ...] [--calculation-threads N]\n"
-      "               [--calculation-queue N] [--reuse-port] [--keep-alive-timeout-s S]\n"
+      "               [--calculation-queue N] [--calculation-timeout-ms MS]\n"
+      "               [--reuse-port] [--keep-alive-timeout-s S]\n"
       "               [--lame-duck-ms MS] [--max-connections N]\n"
       "  --host H        address to listen on (default 127.0.0.1; env CUTCALC_HOST)\n"
       "  --port P        TCP port, 0 = any free port (default 8080; env CUTCALC_PORT)\n"
@@ -156,6 +164,11 @@ std::string usage() {
       "                  503 with Retry-After (default " +
       std::to_string(HttpTuning{}.calculation_queue_limit) +
       "; env CUTCALC_CALCULATION_QUEUE)\n"
+      "  --calculation-timeout-ms MS  such a calculation is stopped and answered 503\n"
+      "                  with Retry-After when it has not ended MS ms after it was\n"
+      "                  handed over, queue wait included (default " +
+      std::to_string(HttpLimits{}.calculation_timeout.count()) +
+      "; env CUTCALC_CALCULATION_TIMEOUT_MS)\n"
       "  --reuse-port    share the port with other processes (SO_REUSEPORT); without\n"
       "                  it a port in use is an error (env CUTCALC_REUSE_PORT=on|off)\n"
       "  --keep-alive-timeout-s S  an idle keep-alive connection closes after S s\n"

@@ -15,6 +15,7 @@
 #include "api/json_endpoint.h"
 #include "api/problem.h"
 #include "api/routes.h"
+#include "domain/common/interruption.h"
 #include "service/build_info.h"
 #include "service/http_tuning.h"
 #include "service/logging.h"
@@ -31,6 +32,8 @@ constexpr const char* kNoSniffHeader = "X-Content-Type-Options";
 // What a client refused by a full calculation pool is told to wait: the queue drains in well
 // under a second at the largest programs' tens of milliseconds each.
 constexpr int kBusyRetryAfterSeconds = 1;
+// The status the metrics and the access log give a calculation whose client went before its answer.
+constexpr int kClientClosedRequest = 499;
 
 void write(HttpResponse& res, api::ApiResponse&& response) {
   res.status = response.status;
@@ -260,34 +263,53 @@ Reply HttpApp::answer(const HttpRequest& req) {
     }
     // On the pool: it owns copies of what the calculation reads.
     const api::JsonHandler handler = route->calculation;
-    auto run = [this, exchange, res, handler, body = std::string(req.body),
+    auto run = [exchange, res, handler, body = std::string(req.body),
                 content_type = std::string(headers.content_type),
-                accept = std::string(headers.accept)]() mutable {
-      try {
-        write(res, api::run_json_endpoint({exchange.route, content_type, body, exchange.request_id,
-                                           accept, exchange.language},
-                                          handler));
-        return finish(exchange, std::move(res));
-      } catch (const std::exception& e) {
-        return internal_error(exchange, e);
-      }
+                accept = std::string(headers.accept)](const std::atomic<bool>& stop) mutable {
+      const domain::InterruptionScope interruptible(stop);
+      write(res, api::run_json_endpoint({exchange.route, content_type, body, exchange.request_id,
+                                         accept, exchange.language},
+                                        handler));
+      return std::move(res);
     };
-    auto refuse = [this, exchange, res]() mutable {
-      exchange.write_problem(
-          res, problem(api::ProblemKind::unavailable, api::ErrorCode::calculations_busy,
-                       {{"retry_after_s", kBusyRetryAfterSeconds}}));
-      res.set_header("Retry-After", std::to_string(kBusyRetryAfterSeconds));
-      return finish(exchange, std::move(res));
+    auto settle = [this, exchange, res](DeferredOutcome outcome, HttpResponse computed,
+                                        std::string_view failure) mutable {
+      return settle_calculation(exchange, std::move(res), outcome, std::move(computed), failure);
     };
-    return DeferredResponse{std::move(run), std::move(refuse)};
+    return DeferredResponse{std::move(run), std::move(settle)};
   } catch (const std::exception& e) {
-    return internal_error(exchange, e);
+    return internal_error(exchange, e.what());
   }
 }
 
-HttpResponse HttpApp::internal_error(const Exchange& exchange, const std::exception& error) {
+HttpResponse HttpApp::settle_calculation(const Exchange& exchange, HttpResponse res,
+                                         DeferredOutcome outcome, HttpResponse computed,
+                                         std::string_view failure) {
+  switch (outcome) {
+    case DeferredOutcome::computed:
+      return finish(exchange, std::move(computed));
+    case DeferredOutcome::failed:
+      return internal_error(exchange, failure);
+    case DeferredOutcome::pool_full:
+    case DeferredOutcome::timed_out:
+      exchange.write_problem(
+          res, problem(api::ProblemKind::unavailable,
+                       outcome == DeferredOutcome::pool_full ? api::ErrorCode::calculations_busy
+                                                             : api::ErrorCode::calculation_timeout,
+                       {{"retry_after_s", kBusyRetryAfterSeconds}}));
+      res.set_header("Retry-After", std::to_string(kBusyRetryAfterSeconds));
+      return finish(exchange, std::move(res));
+    case DeferredOutcome::abandoned:
+      break;
+  }
+  // Nothing is sent; the metrics and the log say 499, nginx's "client closed request".
+  res.status = kClientClosedRequest;
+  return finish(exchange, std::move(res));
+}
+
+HttpResponse HttpApp::internal_error(const Exchange& exchange, std::string_view error) {
   spdlog::error("unhandled exception on {} {} (request {}): {}", exchange.method, exchange.path,
-                exchange.request_id, error.what());
+                exchange.request_id, error);
   HttpResponse res;
   res.set_header(kNoSniffHeader, "nosniff");
   res.set_header(kRequestIdHeader, exchange.request_id);

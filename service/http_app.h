@@ -7,6 +7,7 @@
 #include <exception>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "service/config.h"
 #include "service/cors.h"
@@ -49,11 +50,14 @@ class HttpApp {
   struct Exchange;  // one request's bookkeeping, from answer() to its response
   // The response for an error the engine answers by itself (framing, size, connection cap).
   std::string engine_error_response(const EngineError& error);
-  Reply answer_calculation(const HttpRequest& request, const RouteEntry& route, Exchange exchange);
   // Metrics and access log of a finished request; returns `res`.
   HttpResponse finish(const Exchange& exchange, HttpResponse res);
+  // The one answer of a calculation handed to the pool (`res`: its headers so far).
+  HttpResponse settle_calculation(const Exchange& exchange, HttpResponse res,
+                                  DeferredOutcome outcome, HttpResponse computed,
+                                  std::string_view failure);
   // A 500 problem for a handler that threw (a bug): logged, counted, answered.
-  HttpResponse internal_error(const Exchange& exchange, const std::exception& error);
+  HttpResponse internal_error(const Exchange& exchange, std::string_view error);
   void install_routes();
 
   Config config_;

@@ -42,6 +42,8 @@ struct ConnectionCounters {
   std::atomic<std::uint64_t> large_bodies_receiving{0};  // gauge: bodies over the default limit
   std::atomic<std::uint64_t> epoll_failures{0};          // epoll_ctl refused; the connection closed
   WorkPoolCounters calculations;                         // the calculation pool
+  std::atomic<std::uint64_t> calculation_timeouts{0};    // 503: calculation_timeout passed
+  std::atomic<std::uint64_t> calculations_abandoned{0};  // the client went while on the pool
   // Bytes the open connections hold in their buffers, as of the loops' last sweep (gauge): an idle
   // connection gives its buffers back, so this is about the connections busy now.
   std::atomic<std::uint64_t> buffer_bytes{0};

@@ -128,10 +128,15 @@ struct EventLoopEngine::Connection {
   bool awaiting = false;           // a request of this connection is on the pool
   bool awaited_head_only = false;  // of that request: a HEAD
   ConnectionAfter awaited_after = ConnectionAfter::close;  // of that request
-  std::uint32_t events = 0;                                // the epoll interest registered
-  Clock::time_point request_deadline{};                    // of the request being received
-  Clock::time_point deadline{};    // of whatever the connection waits for now
-  Clock::time_point idle_since{};  // when its last response was sent
+  // Of that request: how it is settled, the flag that stops its calculation (shared with the
+  // job) and when it is answered 503 if the pool has not answered it.
+  std::function<HttpResponse(DeferredOutcome, HttpResponse, std::string_view)> awaited_settle;
+  std::shared_ptr<std::atomic<bool>> awaited_stop;
+  Clock::time_point awaited_deadline{};
+  std::uint32_t events = 0;              // the epoll interest registered
+  Clock::time_point request_deadline{};  // of the request being received
+  Clock::time_point deadline{};          // of whatever the connection waits for now
+  Clock::time_point idle_since{};        // when its last response was sent
 
   // Gives back the buffers of an idle connection (a few KiB of its own each; thousands of idle
   // keep-alive connections must cost little).
@@ -155,6 +160,8 @@ struct EventLoopEngine::Completion {
   int fd = -1;
   std::uint64_t connection_id = 0;
   HttpResponse response;
+  bool failed = false;  // the calculation threw: `failure` says what
+  std::string failure;
 };
 
 class EventLoopEngine::Loop {
@@ -261,16 +268,15 @@ class EventLoopEngine::Loop {
     }
     for (Completion& done : completed) {
       const auto it = table_.find(done.fd);
-      if (it == table_.end() || it->second->id != done.connection_id) continue;  // closed meanwhile
-      Connection& connection = *it->second;
-      connection.awaiting = false;
-      if (engine_.phase_() != ServerPhase::serving) {
-        connection.awaited_after = ConnectionAfter::close;
+      // Closed meanwhile, or answered 503 at the calculation timeout.
+      if (it == table_.end() || it->second->id != done.connection_id || !it->second->awaiting) {
+        continue;
       }
-      if (connection.awaited_after == ConnectionAfter::close) connection.last_response = true;
-      write_response(done.response, connection.awaited_head_only, connection.awaited_after,
-                     connection.output);
+      Connection& connection = *it->second;
       try {
+        answer_awaited(connection,
+                       done.failed ? DeferredOutcome::failed : DeferredOutcome::computed,
+                       std::move(done.response), done.failure);
         advance(connection);
       } catch (...) {
         close(done.fd);
@@ -312,6 +318,7 @@ class EventLoopEngine::Loop {
   void close(int fd) {
     const auto it = table_.find(fd);
     if (it == table_.end()) return;
+    if (it->second->awaiting) abandon(*it->second);
     // Out of epoll before the descriptor can be closed and its number reused. (It fails only if
     // the descriptor is not registered, which the table rules out; counted, never ignored.)
     if (it->second->events != 0 && ::epoll_ctl(epoll_fd_.get(), EPOLL_CTL_DEL, fd, nullptr) != 0) {
@@ -364,8 +371,11 @@ class EventLoopEngine::Loop {
       if (done) close(fd);
       return;
     }
-    // Waiting for the pool, only a failed socket is news (its interest is empty meanwhile).
-    if (connection.awaiting && (events & (EPOLLHUP | EPOLLERR)) != 0) return close(fd);
+    // Waiting for the pool, only the client's going is news: a failed socket, or the end of its
+    // input (as nginx takes it: TCP cannot tell a half-close from a close before a write).
+    if (connection.awaiting && (events & (EPOLLHUP | EPOLLERR | EPOLLRDHUP)) != 0) {
+      return close(fd);
+    }
     if ((events & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0 && !connection.awaiting &&
         !connection.has_output() && !connection.last_response && !connection.peer_eof) {
       switch (read_input(connection)) {
@@ -401,9 +411,9 @@ class EventLoopEngine::Loop {
     }
     if (connection.awaiting) {
       // No reading until the answer is in: pipelined requests wait their turn, and an EOF or a
-      // full buffer cannot wake the loop over and over. The pool bounds the wait.
-      connection.deadline = Clock::time_point::max();
-      if (!watch(connection, 0)) close(fd);
+      // full buffer cannot wake the loop over and over. The calculation timeout bounds the wait.
+      connection.deadline = connection.awaited_deadline;
+      if (!watch(connection, EPOLLRDHUP)) close(fd);
       return;
     }
     const auto now = Clock::now();
@@ -473,7 +483,8 @@ class EventLoopEngine::Loop {
       engine_.counters_.requests.fetch_add(1, std::memory_order_relaxed);
       if (auto* deferred = std::get_if<DeferredResponse>(&reply)) {
         if (defer(connection, *deferred, head_only, after)) return false;
-        write_response(deferred->refuse(), head_only, after, connection.output);
+        write_response(deferred->settle(DeferredOutcome::pool_full, {}, {}), head_only, after,
+                       connection.output);
       } else {
         write_response(std::get<HttpResponse>(reply), head_only, after, connection.output);
       }
@@ -482,19 +493,74 @@ class EventLoopEngine::Loop {
     return false;
   }
 
-  // Hands a deferred request to the pool; false when its queue is full.
-  bool defer(Connection& connection, const DeferredResponse& work, bool head_only,
+  // Hands a deferred request to the pool (its `run` moves into the job); false when the queue is
+  // full. Whatever the job does, its connection is answered: by the job's completion (a throw
+  // included), else by the calculation timeout (a job that never ends, a completion lost to a
+  // failed allocation). A stopped job's completion is not sent: its request is settled already.
+  bool defer(Connection& connection, DeferredResponse& work, bool head_only,
              ConnectionAfter after) {
     const int fd = connection.fd.get();
     const std::uint64_t id = connection.id;
-    const bool queued = engine_.pool_->try_submit([this, fd, id, run = work.run] {
-      complete({fd, id, run()});
+    auto stop = std::make_shared<std::atomic<bool>>(false);
+    const bool queued = engine_.pool_->try_submit([this, fd, id, stop, run = std::move(work.run)] {
+      Completion done{fd, id, {}, false, {}};
+      try {
+        done.response = run(*stop);
+      } catch (const std::exception& error) {
+        done.failed = true;
+        done.failure = error.what();
+      } catch (...) {  // domain::Interrupted once stopped; anything else is a bug
+        done.failed = true;
+        done.failure = "an exception that is not a std::exception";
+      }
+      if (stop->load()) return;
+      complete(std::move(done));
     });
     if (!queued) return false;
     connection.awaiting = true;
     connection.awaited_head_only = head_only;
     connection.awaited_after = after;
+    connection.awaited_settle = std::move(work.settle);
+    connection.awaited_stop = std::move(stop);
+    connection.awaited_deadline = Clock::now() + engine_.settings_.limits.calculation_timeout;
     return true;
+  }
+
+  // Ends the connection's wait for the pool: the response that settles its request goes out.
+  void answer_awaited(Connection& connection, DeferredOutcome outcome, HttpResponse computed,
+                      std::string_view failure) {
+    const auto settle = std::move(connection.awaited_settle);
+    connection.awaited_settle = nullptr;
+    connection.awaited_stop.reset();
+    connection.awaiting = false;
+    // A timed-out calculation may still hold a pool thread until its next check: the client is
+    // told to come back later, on a new connection.
+    if (engine_.phase_() != ServerPhase::serving || outcome == DeferredOutcome::timed_out) {
+      connection.awaited_after = ConnectionAfter::close;
+    }
+    if (connection.awaited_after == ConnectionAfter::close) connection.last_response = true;
+    write_response(settle(outcome, std::move(computed), failure), connection.awaited_head_only,
+                   connection.awaited_after, connection.output);
+  }
+
+  // The calculation timeout passed: its job is stopped and the client answered 503.
+  void time_out_calculation(Connection& connection) {
+    engine_.counters_.calculation_timeouts.fetch_add(1, std::memory_order_relaxed);
+    connection.awaited_stop->store(true);
+    answer_awaited(connection, DeferredOutcome::timed_out, {}, {});
+    advance(connection);
+  }
+
+  // The connection closes while its request is on the pool (the client went away, or the server
+  // stops): the job is stopped and the request settled without an answer.
+  void abandon(Connection& connection) noexcept {
+    engine_.counters_.calculations_abandoned.fetch_add(1, std::memory_order_relaxed);
+    connection.awaited_stop->store(true);
+    connection.awaiting = false;
+    try {
+      connection.awaited_settle(DeferredOutcome::abandoned, {}, {});
+    } catch (...) {  // its metrics and log line are lost; nothing else can be
+    }
   }
 
   // False while a large body is still arriving and framing it again would find it incomplete.
@@ -602,6 +668,7 @@ class EventLoopEngine::Loop {
     const bool stopped = engine_.phase_() == ServerPhase::stopped;
     const auto grace = engine_.settings_.limits.drain_idle_grace;
     std::vector<int> expired;
+    std::vector<int> calculations_late;
     std::vector<int> idle_at_stop;
     std::uint64_t held = 0;
     std::uint64_t released = 0;
@@ -614,7 +681,9 @@ class EventLoopEngine::Loop {
         connection->release_buffers();
       }
       held += connection->held_bytes();
-      if (now >= connection->deadline) {
+      if (now >= connection->deadline && connection->awaiting) {
+        calculations_late.push_back(fd);
+      } else if (now >= connection->deadline) {
         if (connection->in_request) {
           engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
         }
@@ -631,6 +700,13 @@ class EventLoopEngine::Loop {
     // otherwise, and the process's memory is what a container limit counts).
     if (released >= kTrimAfterReleasedBytes) ::malloc_trim(0);
     for (const int fd : expired) close(fd);
+    for (const int fd : calculations_late) {
+      try {
+        time_out_calculation(*table_.at(fd));
+      } catch (...) {
+        close(fd);
+      }
+    }
     // Once the listener is closed, idle connections close after the drain grace (one that brings a
     // request meanwhile is answered with Connection: close) and lingering ones at once; a request
     // in flight keeps its connection until it is answered or its deadline passes. A connection

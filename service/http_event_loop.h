@@ -70,13 +70,28 @@ enum class ServerPhase {
   stopped    // the listener is closed: idle connections close after the drain grace
 };
 
-// Work the app hands to the calculation pool instead of answering on the loop.
+// How a request handed to the calculation pool ended.
+enum class DeferredOutcome {
+  computed,   // `run` returned its response
+  failed,     // `run` threw (a bug): answered 500
+  pool_full,  // the pool's queue was full: never run, 503 with Retry-After
+  timed_out,  // HttpLimits::calculation_timeout passed first: stopped, 503 with Retry-After
+  abandoned   // the connection closed first (the client went away): stopped, nothing is sent
+};
+
+// Work the app hands to the calculation pool instead of answering on the loop. Every request
+// handed over is settled exactly once, whatever happens: that is where its metrics and its log
+// line are written.
 struct DeferredResponse {
-  // Runs on a pool thread; owns copies of everything it reads (the request's views die with the
-  // call that gave them). Must not throw.
-  std::function<HttpResponse()> run;
-  // The answer when the pool's queue is full (503 with Retry-After); runs on the loop.
-  std::function<HttpResponse()> refuse;
+  // Runs on a pool thread and owns everything it reads (the request's views die with the call
+  // that gave them). `stop` is set once nobody waits for the answer any more (a timeout, a client
+  // gone): the calculation should stop at its next check (domain/common/interruption.h). May throw.
+  std::function<HttpResponse(const std::atomic<bool>& stop)> run;
+  // Runs on the loop, once: the response that goes out. `computed` is run's response (computed),
+  // `failure` what run threw (failed); both empty otherwise. abandoned: the answer is dropped.
+  std::function<HttpResponse(DeferredOutcome outcome, HttpResponse computed,
+                             std::string_view failure)>
+      settle;
 };
 
 // The app's answer to one request: a response now, or work for the pool.

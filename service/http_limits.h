@@ -34,6 +34,10 @@ struct HttpLimits {
   // for the requests in flight (at least 1 s).
   std::chrono::milliseconds request_timeout{10000};
   std::chrono::milliseconds write_timeout{5000};  // a response waiting for the client to read it
+  // A calculation on the pool, from its hand-over (queue wait included) to its answer: past it the
+  // client gets 503 with Retry-After and the calculation is stopped at its next check. Far above
+  // the largest program's time (README.md, "Running"), so only a stuck or runaway job meets it.
+  std::chrono::milliseconds calculation_timeout{30000};
   // After a connection's last response: how long its unread input is read and dropped, so that the
   // close does not reset the connection before the client has read the response (RFC 9112 9.6).
   std::chrono::milliseconds linger_time{1000};

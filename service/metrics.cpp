@@ -98,6 +98,13 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
       {"cutcalc_calculation_pool_refused_total",
        "Heavy calculations answered 503 with Retry-After because the pool's queue was full.",
        counters.calculations.refused},
+      {"cutcalc_calculation_timeouts_total",
+       "Heavy calculations answered 503 with Retry-After because the calculation timeout passed "
+       "(the calculation was stopped).",
+       counters.calculation_timeouts},
+      {"cutcalc_calculations_abandoned_total",
+       "Heavy calculations stopped because their connection closed before the answer.",
+       counters.calculations_abandoned},
   };
   std::ostringstream out;
   for (const Counter& counter : all) {

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <variant>
 
+#include "domain/common/interruption.h"
 #include "domain/machine_time/gcode_arc.h"
 #include "domain/machine_time/gcode_codes.h"
 #include "domain/machine_time/gcode_lexer.h"
@@ -70,6 +71,7 @@ class Reader {
   std::variant<ReadSummary, ReadError> read(std::string_view text) {
     std::size_t at = 0;
     while (at < text.size() && !ended_) {
+      interruption_point();
       const void* found = std::memchr(text.data() + at, '\n', text.size() - at);
       const std::size_t end =
           found == nullptr

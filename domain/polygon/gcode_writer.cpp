@@ -14,6 +14,7 @@
 #include <string_view>
 #include <utility>
 
+#include "domain/common/interruption.h"
 #include "domain/common/numeric.h"
 
 namespace cutcalc::domain::polygon::detail {
@@ -174,6 +175,7 @@ void write_body(Lines& out, const ProgramLayout& layout, const PrintedLoop& loop
 
   bool previous_ramp = true;
   for (int loop_index = 0; loop_index < loops; ++loop_index) {
+    interruption_point();
     // P22: layer k = loop_index / loops_per_layer + 1; its first loop ramps.
     const int layer = std::min(loop_index / layout.loops_per_layer + 1, layout.layers);
     const bool ramp = loop_index < layout.layers * layout.loops_per_layer &&

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <initializer_list>
 
+#include "domain/common/interruption.h"
+
 namespace cutcalc::domain::program {
 namespace {
 
@@ -25,6 +27,7 @@ class Writer {
   std::string write(const ProgramModel& model) {
     header(model);
     for (const Block& block : model.blocks) {
+      interruption_point();
       std::visit([this](const auto& b) { this->block(b); }, block);
     }
     end();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "domain/common/interruption.h"
 #include "domain/program/dialect_writer.h"
 #include "domain/program/lathe_dialect.h"
 
@@ -17,6 +18,7 @@ class LatheWriter {
   Result<std::string> write(const LatheProgram& program) {
     header(program);
     for (const LatheBlock& block : program.blocks) {
+      interruption_point();
       std::visit([this](const auto& b) { this->block(b); }, block);
       if (zero_word_) {
         return make_error(ErrorCode::word_prints_as_zero,

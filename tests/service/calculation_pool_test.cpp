@@ -18,9 +18,11 @@
 #include <memory>
 #include <mutex>
 #include <regex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -65,6 +67,7 @@ class Client {
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
   }
+  void shut_down_writing() const { ::shutdown(fd_, SHUT_WR); }
   void send(const std::string& bytes) const {
     std::size_t sent = 0;
     while (sent < bytes.size()) {
@@ -126,16 +129,20 @@ std::string request(const std::string& method, const std::string& path,
 }
 
 // An engine whose "/heavy" goes to the pool and waits at the gate there (answering "heavy
-// <X-Tag>"), refused with 503 + Retry-After when the pool is full; every other path is answered
-// "light" on the loop. The pool has one thread and room for one waiting job.
+// <X-Tag>"), "/stuck" spins on the pool until it is stopped, "/throw" throws there (a
+// std::exception, or an int with "X-Tag: int"); refused with 503 + Retry-After when the pool is
+// full; every other path is answered "light" on the loop. The pool has one thread and room for one
+// waiting job. Every settled request's outcome is recorded.
 class HeldEngine {
  public:
-  explicit HeldEngine(std::size_t loops) {
+  explicit HeldEngine(std::size_t loops,
+                      std::chrono::milliseconds calculation_timeout = std::chrono::seconds(60)) {
     EventLoopSettings settings;
     settings.loops = loops;
     settings.pool.threads = 1;
     settings.pool.queue_limit = 1;
     settings.pool.nice_increment = 0;
+    settings.limits.calculation_timeout = calculation_timeout;
     engine_ = std::make_unique<EventLoopEngine>(
         settings, [this](const HttpRequest& request) { return serve(request); },
         [](const EngineError&) {
@@ -155,22 +162,62 @@ class HeldEngine {
   EventLoopEngine& engine() { return *engine_; }
   Gate& gate() { return gate_; }
   const WorkPoolCounters& pool() const { return counters_.calculations; }
+  const ConnectionCounters& counters() const { return counters_; }
+  // "/stuck" jobs that saw their stop flag.
+  [[nodiscard]] int stopped() const { return stopped_.load(); }
+  [[nodiscard]] std::vector<DeferredOutcome> settled() {
+    const std::lock_guard lock(mutex_);
+    return settled_;
+  }
 
  private:
   Reply serve(const HttpRequest& request) {
-    if (request.path != "/heavy") return text(200, "light");
-    return DeferredResponse{[this, tag = std::string(request.header("X-Tag"))] {
-                              gate_.pass();
-                              return text(200, "heavy " + tag);
-                            },
-                            [] {
-                              HttpResponse busy = text(503, "busy");
-                              busy.set_header("Retry-After", "1");
-                              return busy;
-                            }};
+    if (request.path != "/heavy" && request.path != "/stuck" && request.path != "/throw") {
+      return text(200, "light");
+    }
+    return DeferredResponse{
+        [this, path = std::string(request.path),
+         tag = std::string(request.header("X-Tag"))](const std::atomic<bool>& stop) {
+          if (path == "/stuck") {
+            while (!stop.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            stopped_.fetch_add(1);
+            throw std::runtime_error("stopped");  // what domain::Interrupted does
+          }
+          if (path == "/throw") {
+            if (tag == "int") throw 42;
+            throw std::runtime_error("broken " + tag);
+          }
+          gate_.pass();
+          return text(200, "heavy " + tag);
+        },
+        [this](DeferredOutcome outcome, HttpResponse computed, std::string_view failure) {
+          {
+            const std::lock_guard lock(mutex_);
+            settled_.push_back(outcome);
+          }
+          switch (outcome) {
+            case DeferredOutcome::computed:
+              return computed;
+            case DeferredOutcome::failed:
+              return text(500, "failed: " + std::string(failure));
+            case DeferredOutcome::pool_full:
+            case DeferredOutcome::timed_out: {
+              HttpResponse busy =
+                  text(503, outcome == DeferredOutcome::pool_full ? "busy" : "timed out");
+              busy.set_header("Retry-After", "1");
+              return busy;
+            }
+            case DeferredOutcome::abandoned:
+              break;
+          }
+          return text(499, "");
+        }};
   }
 
   Gate gate_;
+  std::atomic<int> stopped_{0};
+  std::mutex mutex_;
+  std::vector<DeferredOutcome> settled_;  // guarded by mutex_
   ConnectionCounters counters_;
   std::unique_ptr<EventLoopEngine> engine_;
 };
@@ -257,6 +304,63 @@ TEST(CalculationPool, AnswerForAConnectionClosedMeanwhileGoesNowhere) {
   ASSERT_FALSE(answered.error) << *answered.error;
   ASSERT_EQ(answered.finals(), 1U) << next.bytes();
   EXPECT_EQ(answered.responses[0].body, "light");
+}
+
+TEST(CalculationPool, CalculationPastItsTimeoutIsAnswered503AndStopped) {
+  HeldEngine held(1, std::chrono::milliseconds(50));
+  Client client(held.engine());
+  client.send(request("GET", "/stuck"));
+  ASSERT_TRUE(client.read_to_close()) << client.bytes();
+  const testing::ParsedResponses answered = testing::parse_responses(client.bytes());
+  ASSERT_FALSE(answered.error) << *answered.error;
+  ASSERT_EQ(answered.finals(), 1U) << client.bytes();
+  EXPECT_EQ(answered.responses[0].status, 503);
+  EXPECT_EQ(answered.responses[0].header("retry-after"), "1");
+  EXPECT_EQ(answered.responses[0].header("connection"), "close");
+  ASSERT_TRUE(eventually([&] { return held.stopped() == 1; }));
+  EXPECT_EQ(held.counters().calculation_timeouts.load(), 1U);
+  EXPECT_EQ(held.settled(), std::vector{DeferredOutcome::timed_out});
+}
+
+TEST(CalculationPool, CalculationThatThrowsIsAnswered500AndTheConnectionGoesOn) {
+  HeldEngine held(1);
+  Client client(held.engine());
+  client.send(request("GET", "/throw", "X-Tag: std\r\n") +
+              request("GET", "/throw", "X-Tag: int\r\n") +
+              request("GET", "/light", "Connection: close\r\n"));
+  ASSERT_TRUE(client.read_to_close()) << client.bytes();
+  const testing::ParsedResponses answered = testing::parse_responses(client.bytes());
+  ASSERT_FALSE(answered.error) << *answered.error;
+  ASSERT_EQ(answered.finals(), 3U) << client.bytes();
+  EXPECT_EQ(answered.responses[0].status, 500);
+  EXPECT_EQ(answered.responses[0].body, "failed: broken std");
+  EXPECT_EQ(answered.responses[1].status, 500);
+  EXPECT_EQ(answered.responses[1].body, "failed: an exception that is not a std::exception");
+  EXPECT_EQ(answered.responses[2].body, "light");
+}
+
+TEST(CalculationPool, ClientThatHangsUpStopsItsCalculation) {
+  HeldEngine held(1);
+  auto gone = std::make_unique<Client>(held.engine());
+  gone->send(request("GET", "/stuck"));
+  ASSERT_TRUE(eventually([&] { return held.pool().running.load() == 1; }));
+  gone.reset();
+  ASSERT_TRUE(eventually([&] { return held.stopped() == 1; }));
+  EXPECT_EQ(held.counters().calculations_abandoned.load(), 1U);
+  EXPECT_EQ(held.settled(), std::vector{DeferredOutcome::abandoned});
+}
+
+// As nginx does (proxy_ignore_client_abort off): the end of the client's input while its
+// calculation runs means it has gone; TCP cannot tell a half-close from a close before a write.
+TEST(CalculationPool, ClientThatEndsItsInputStopsItsCalculation) {
+  HeldEngine held(1);
+  Client client(held.engine());
+  client.send(request("GET", "/stuck"));
+  ASSERT_TRUE(eventually([&] { return held.pool().running.load() == 1; }));
+  client.shut_down_writing();
+  ASSERT_TRUE(eventually([&] { return held.stopped() == 1; }));
+  EXPECT_TRUE(client.read_to_close());
+  EXPECT_EQ(held.settled(), std::vector{DeferredOutcome::abandoned});
 }
 
 TEST(CalculationPool, HeadOfADeferredRequestHasContentLengthButNoBody) {
