@@ -282,6 +282,11 @@ constexpr std::array kCatalogue{
           "{retry_after_s} s",
           "расчёт занял больше времени, чем допускает сервер, и был остановлен; повторите через "
           "{retry_after_s} с"},
+    Entry{ErrorCode::memory_busy,
+          "the server's memory for requests is taken by other answers and programs; retry after "
+          "{retry_after_s} s",
+          "память сервера для запросов занята другими ответами и программами; повторите через "
+          "{retry_after_s} с"},
     Entry{ErrorCode::internal_error, "an internal error occurred (a bug in cutcalc); it was logged",
           "внутренняя ошибка (ошибка в cutcalc); она записана в журнал"},
 };

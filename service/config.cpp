@@ -27,6 +27,7 @@ constexpr std::array kSettings = {
     Setting{"--keep-alive-timeout-s", "CUTCALC_KEEP_ALIVE_TIMEOUT_S"},
     Setting{"--lame-duck-ms", "CUTCALC_LAME_DUCK_MS"},
     Setting{"--max-connections", "CUTCALC_MAX_CONNECTIONS"},
+    Setting{"--memory-limit-mb", "CUTCALC_MEMORY_LIMIT_MB"},
 };
 
 // A flag that may stand alone, meaning "on".
@@ -117,6 +118,12 @@ std::string apply(Config& config, std::string_view flag, const std::string& valu
       return "--max-connections must be an integer 1..1000000, got '" + value + "'";
     }
     config.http.max_connections = static_cast<std::size_t>(*connections);
+  } else if (flag == "--memory-limit-mb") {
+    const auto mib = parse_long(value, 64, 1048576);
+    if (!mib) {
+      return "--memory-limit-mb must be an integer 64..1048576, got '" + value + "'";
+    }
+    config.http.memory_limit_bytes = static_cast<std::uint64_t>(*mib) * 1024 * 1024;
   } else if (flag == kSwitch) {
     if (value == "on" || value == "true" || value == "1") {
       config.http.reuse_port = true;
@@ -145,7 +152,7 @@ std::string usage() {
       "               [--cors-origin ORIGIN ...] [--calculation-threads N]\n"
       "               [--calculation-queue N] [--calculation-timeout-ms MS]\n"
       "               [--reuse-port] [--keep-alive-timeout-s S]\n"
-      "               [--lame-duck-ms MS] [--max-connections N]\n"
+      "               [--lame-duck-ms MS] [--max-connections N] [--memory-limit-mb M]\n"
       "  --host H        address to listen on (default 127.0.0.1; env CUTCALC_HOST)\n"
       "  --port P        TCP port, 0 = any free port (default 8080; env CUTCALC_PORT)\n"
       "  --threads N     event-loop threads serving connections and requests\n"
@@ -183,6 +190,11 @@ std::string usage() {
       "  --max-connections N  open connections at most, beyond: 503 (default: what the\n"
       "                  cgroup memory limit holds, and the descriptor limit;\n"
       "                  env CUTCALC_MAX_CONNECTIONS)\n"
+      "  --memory-limit-mb M  the memory the process may use, for the connection cap and\n"
+      "                  the memory budget of large bodies and answers waiting for\n"
+      "                  their clients; beyond it such work gets 503 (default: the\n"
+      "                  cgroup's memory.max, else 256 for the budget;\n"
+      "                  env CUTCALC_MEMORY_LIMIT_MB)\n"
       "  --routes        print the calculation endpoints as JSON and exit (for the tools)\n"
       "  --help, --version\n");
 }

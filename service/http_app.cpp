@@ -189,8 +189,11 @@ std::string HttpApp::engine_error_response(const EngineError& error) {
   const api::Problem said =
       error.status == 413
           ? problem(api::ProblemKind::payload_too_large, api::ErrorCode::body_too_large)
-      : error.status == 503 && error.retry_after_s > 0
+      : error.busy == EngineBusy::uploads
           ? problem(api::ProblemKind::unavailable, api::ErrorCode::uploads_busy,
+                    {{"retry_after_s", error.retry_after_s}})
+      : error.busy == EngineBusy::memory
+          ? problem(api::ProblemKind::unavailable, api::ErrorCode::memory_busy,
                     {{"retry_after_s", error.retry_after_s}})
       : error.status == 503
           ? problem(api::ProblemKind::unavailable, api::ErrorCode::connection_limit)
@@ -291,12 +294,15 @@ HttpResponse HttpApp::settle_calculation(const Exchange& exchange, HttpResponse 
     case DeferredOutcome::failed:
       return internal_error(exchange, failure);
     case DeferredOutcome::pool_full:
+    case DeferredOutcome::over_budget:
     case DeferredOutcome::timed_out:
       exchange.write_problem(
-          res, problem(api::ProblemKind::unavailable,
-                       outcome == DeferredOutcome::pool_full ? api::ErrorCode::calculations_busy
-                                                             : api::ErrorCode::calculation_timeout,
-                       {{"retry_after_s", kBusyRetryAfterSeconds}}));
+          res,
+          problem(api::ProblemKind::unavailable,
+                  outcome == DeferredOutcome::pool_full     ? api::ErrorCode::calculations_busy
+                  : outcome == DeferredOutcome::over_budget ? api::ErrorCode::memory_busy
+                                                            : api::ErrorCode::calculation_timeout,
+                  {{"retry_after_s", kBusyRetryAfterSeconds}}));
       res.set_header("Retry-After", std::to_string(kBusyRetryAfterSeconds));
       return finish(exchange, std::move(res));
     case DeferredOutcome::abandoned:
@@ -358,7 +364,8 @@ void HttpApp::install_routes() {
 
   routes_.add_get("/metrics", [this](const HttpRequest&, HttpResponse& res) {
     res.set_content(
-        metrics_.render() + render_connection_metrics(counters_, engine_->open_connections()),
+        metrics_.render() + render_connection_metrics(counters_, engine_->open_connections(),
+                                                      engine_->memory_budget()),
         "text/plain; version=0.0.4; charset=utf-8");
   });
 

@@ -34,6 +34,13 @@ constexpr std::size_t kReadChunk = 16 * 1024;
 constexpr std::uint64_t kTrimAfterReleasedBytes = 4 * 1024 * 1024;
 constexpr char kContinue[] = "HTTP/1.1 100 Continue\r\n\r\n";
 
+}  // namespace
+
+// Members of EventLoopEngine::Connection: their types have this file's name on them instead of an
+// anonymous namespace, since a class with external linkage must not hold internal types
+// (-Wsubobject-linkage, which unity builds raise).
+namespace event_loop_detail {
+
 // Counts a connection as open from its first member's construction to its last member's
 // destruction, so that drain() sees it closed only once its descriptor is.
 class OpenCount {
@@ -74,14 +81,22 @@ class LargeBodySlot {
   std::atomic<std::uint64_t>* count_ = nullptr;
 };
 
+}  // namespace event_loop_detail
+
+namespace {
+
+using event_loop_detail::LargeBodySlot;
+using event_loop_detail::OpenCount;
+
 constexpr int kLargeBodyRetryAfterSeconds = 1;
 
 }  // namespace
 
 struct EventLoopEngine::Connection {
   Connection(UniqueFd socket, std::uint64_t connection_id, std::size_t requests,
-             std::atomic<std::size_t>& open)
+             std::atomic<std::size_t>& open, MemoryBudget& budget)
       : counted(open),
+        charge(budget),
         fd(std::move(socket)),
         id(connection_id),
         addresses(fd.get()),
@@ -99,6 +114,10 @@ struct EventLoopEngine::Connection {
   [[nodiscard]] std::size_t pending_output() const { return output.size() - output_offset; }
 
   OpenCount counted;  // first: released last
+  // What the connection holds in the memory budget: its large body (from its admission until its
+  // calculation has answered: the pool's job holds a copy) and the output not yet sent.
+  BudgetCharge charge;
+  std::uint64_t body_charge = 0;
   UniqueFd fd;
   std::uint64_t id;  // unique in the engine's life: a completion for a reused descriptor is stale
   SocketAddresses addresses;
@@ -162,6 +181,8 @@ struct EventLoopEngine::Completion {
   HttpResponse response;
   bool failed = false;  // the calculation threw: `failure` says what
   std::string failure;
+  bool over_budget = false;  // the answer did not fit in the memory budget: dropped
+  BudgetLease answer_bytes;  // the answer's bytes in the memory budget
 };
 
 class EventLoopEngine::Loop {
@@ -274,8 +295,14 @@ class EventLoopEngine::Loop {
       }
       Connection& connection = *it->second;
       try {
+        if (done.over_budget) {
+          engine_.counters_.memory_refused.fetch_add(1, std::memory_order_relaxed);
+        }
+        connection.charge.adopt(done.answer_bytes.release());
         answer_awaited(connection,
-                       done.failed ? DeferredOutcome::failed : DeferredOutcome::computed,
+                       done.failed        ? DeferredOutcome::failed
+                       : done.over_budget ? DeferredOutcome::over_budget
+                                          : DeferredOutcome::computed,
                        std::move(done.response), done.failure);
         advance(connection);
       } catch (...) {
@@ -392,8 +419,18 @@ class EventLoopEngine::Loop {
     advance(connection);
   }
 
-  // Serves what is buffered, sends what the socket takes, and sets what to wait for next.
+  // Serves what is buffered, sends what the socket takes, sets what to wait for next, and counts
+  // what the connection then holds in the memory budget.
   void advance(Connection& connection) {
+    const int fd = connection.fd.get();
+    step(connection);
+    const auto it = table_.find(fd);
+    if (it == table_.end() || it->second.get() != &connection) return;  // closed
+    if (!connection.awaiting && !connection.large_body.held()) connection.body_charge = 0;
+    connection.charge.set(connection.body_charge + connection.pending_output());
+  }
+
+  void step(Connection& connection) {
     const int fd = connection.fd.get();
     for (;;) {
       const bool more = serve_buffered(connection);
@@ -442,10 +479,15 @@ class EventLoopEngine::Loop {
       if (frame.verdict == RequestFrame::Verdict::incomplete) {
         start_request(connection);
         // Before the buffer check: an admitted large body may buffer more than the default.
-        if (frame.head_bytes > 0 && !admit_large_body(connection, frame, unread)) {
-          engine_.counters_.large_bodies_refused.fetch_add(1, std::memory_order_relaxed);
-          reject(connection, {503, "other large request bodies are being received", frame.method,
-                              frame.target, frame.origin, kLargeBodyRetryAfterSeconds});
+        if (const EngineBusy busy = frame.head_bytes > 0
+                                        ? admit_large_body(connection, frame, unread)
+                                        : EngineBusy::none;
+            busy != EngineBusy::none) {
+          (busy == EngineBusy::memory ? engine_.counters_.memory_refused
+                                      : engine_.counters_.large_bodies_refused)
+              .fetch_add(1, std::memory_order_relaxed);
+          reject(connection, {503, "the server cannot take this body now", frame.method,
+                              frame.target, frame.origin, kLargeBodyRetryAfterSeconds, busy});
           return false;
         }
         const std::size_t cap = connection.buffer_limit > 0 ? connection.buffer_limit
@@ -482,9 +524,14 @@ class EventLoopEngine::Loop {
       if (connection.requests_left > 1) --connection.requests_left;
       engine_.counters_.requests.fetch_add(1, std::memory_order_relaxed);
       if (auto* deferred = std::get_if<DeferredResponse>(&reply)) {
-        if (defer(connection, *deferred, head_only, after)) return false;
-        write_response(deferred->settle(DeferredOutcome::pool_full, {}, {}), head_only, after,
-                       connection.output);
+        // Answers waiting for their clients have spent the budget: no more work until they drain.
+        const bool over_budget = engine_.budget_.spent();
+        if (over_budget) engine_.counters_.memory_refused.fetch_add(1, std::memory_order_relaxed);
+        if (!over_budget && defer(connection, *deferred, head_only, after)) return false;
+        write_response(
+            deferred->settle(
+                over_budget ? DeferredOutcome::over_budget : DeferredOutcome::pool_full, {}, {}),
+            head_only, after, connection.output);
       } else {
         write_response(std::get<HttpResponse>(reply), head_only, after, connection.output);
       }
@@ -503,9 +550,17 @@ class EventLoopEngine::Loop {
     const std::uint64_t id = connection.id;
     auto stop = std::make_shared<std::atomic<bool>>(false);
     const bool queued = engine_.pool_->try_submit([this, fd, id, stop, run = std::move(work.run)] {
-      Completion done{fd, id, {}, false, {}};
+      Completion done{fd, id, {}, false, {}, false, {}};
       try {
         done.response = run(*stop);
+        // Computed, the answer is held: it is kept only if the budget can count it.
+        const std::uint64_t bytes = done.response.body.size();
+        if (engine_.budget_.try_take(bytes)) {
+          done.answer_bytes = BudgetLease(engine_.budget_, bytes);
+        } else {
+          done.over_budget = true;
+          done.response = {};
+        }
       } catch (const std::exception& error) {
         done.failed = true;
         done.failure = error.what();
@@ -571,22 +626,25 @@ class EventLoopEngine::Loop {
   }
 
   // A request whose route takes large bodies, with a body above the default limit (or chunked):
-  // takes one of the engine's places for such bodies, raises what the connection may buffer and
-  // gives the transfer time at HttpLimits::min_upload_bytes_per_s. False when every place is
-  // taken.
-  bool admit_large_body(Connection& connection, const RequestFrame& frame,
-                        std::string_view unread) {
+  // takes one of the engine's places for such bodies and its length (a chunked body: the limit)
+  // in the memory budget, raises what the connection may buffer and gives the transfer time at
+  // HttpLimits::min_upload_bytes_per_s. Says what refused it, if anything did.
+  EngineBusy admit_large_body(Connection& connection, const RequestFrame& frame,
+                              std::string_view unread) {
     const HttpLimits& limits = engine_.settings_.limits;
     const std::size_t body_limit = limits.body_limit_for(frame.target);
-    if (body_limit <= limits.max_body_bytes) return true;
-    if (!frame.chunked && frame.body_bytes <= limits.max_body_bytes) return true;
+    if (body_limit <= limits.max_body_bytes) return EngineBusy::none;
+    if (!frame.chunked && frame.body_bytes <= limits.max_body_bytes) return EngineBusy::none;
     if (!connection.large_body.held()) {
+      const std::size_t expected = frame.chunked ? body_limit : frame.body_bytes;
+      if (!connection.charge.try_add(expected)) return EngineBusy::memory;
       if (!connection.large_body.acquire(engine_.counters_.large_bodies_receiving,
                                          limits.max_large_bodies)) {
-        return false;
+        connection.charge.set(connection.charge.bytes() - expected);
+        return EngineBusy::uploads;
       }
+      connection.body_charge = expected;
       connection.buffer_limit = limits.max_buffered_bytes(body_limit);
-      const std::size_t expected = frame.chunked ? body_limit : frame.body_bytes;
       const auto transfer = std::chrono::milliseconds(
           expected * 1000 / std::max<std::size_t>(limits.min_upload_bytes_per_s, 1));
       if (connection.request_deadline != Clock::time_point::max()) {
@@ -596,7 +654,7 @@ class EventLoopEngine::Loop {
     connection.frame_again_at = frame.chunked
                                     ? std::max(unread.size() * 2, limits.max_buffered_bytes())
                                     : frame.body_offset + frame.body_bytes;
-    return true;
+    return EngineBusy::none;
   }
 
   static void end_large_body(Connection& connection) {
@@ -741,7 +799,8 @@ EventLoopEngine::EventLoopEngine(EventLoopSettings settings, Serve serve, Render
       serve_(std::move(serve)),
       render_error_(std::move(render_error)),
       phase_(std::move(phase)),
-      counters_(counters) {
+      counters_(counters),
+      budget_(settings_.memory_budget_bytes) {
   const std::size_t loops = std::max<std::size_t>(settings_.loops, 1);
   for (std::size_t i = 0; i < loops; ++i) loops_.push_back(std::make_unique<Loop>(*this));
   pool_ = std::make_unique<WorkPool>(settings_.pool, counters_.calculations);
@@ -788,7 +847,7 @@ void EventLoopEngine::adopt(int sock) {
   try {
     connection = std::make_unique<Connection>(
         std::move(fd), next_connection_id_.fetch_add(1, std::memory_order_relaxed),
-        std::max<std::size_t>(settings_.keep_alive_max_requests, 1), open_connections_);
+        std::max<std::size_t>(settings_.keep_alive_max_requests, 1), open_connections_, budget_);
   } catch (...) {
     return;  // out of memory: the descriptor closes with `fd`
   }

@@ -27,6 +27,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -39,6 +40,7 @@
 #include "service/http_limits.h"
 #include "service/http_request.h"
 #include "service/http_response.h"
+#include "service/memory_budget.h"
 #include "service/work_pool.h"
 
 namespace cutcalc::service {
@@ -48,12 +50,21 @@ struct EventLoopSettings {
   std::size_t keep_alive_max_requests = 10000;
   std::size_t max_connections = 10000;  // beyond: 503 and close
   HttpLimits limits;                    // framing and timers
-  WorkPoolSettings pool;                // the calculation pool
+  // The memory budget of the requests' work (service/memory_budget.h); the default: none.
+  std::uint64_t memory_budget_bytes = UINT64_MAX;
+  WorkPoolSettings pool;  // the calculation pool
   bool tcp_nodelay = true;
 };
 
+// What a passing refusal by the engine (503 with Retry-After) is about.
+enum class EngineBusy {
+  none,
+  uploads,  // HttpLimits::max_large_bodies are being received
+  memory    // the memory budget cannot take the body (service/memory_budget.h)
+};
+
 // A response the engine gives by itself, before any handler: a framing error (400), a body over
-// the limit (413) or the connection cap (503). The connection closes after it.
+// the limit (413), the connection cap or a passing refusal (503). The connection closes after it.
 struct EngineError {
   int status = 400;
   std::string_view detail;
@@ -61,6 +72,7 @@ struct EngineError {
   std::string_view target;
   std::string_view origin;  // the request's Origin field; empty when it was not read
   int retry_after_s = 0;    // a 503 for a passing condition (Retry-After); 0: none
+  EngineBusy busy = EngineBusy::none;
 };
 
 // Where the server is in its life (README.md, "Restarts"):
@@ -72,11 +84,13 @@ enum class ServerPhase {
 
 // How a request handed to the calculation pool ended.
 enum class DeferredOutcome {
-  computed,   // `run` returned its response
-  failed,     // `run` threw (a bug): answered 500
-  pool_full,  // the pool's queue was full: never run, 503 with Retry-After
-  timed_out,  // HttpLimits::calculation_timeout passed first: stopped, 503 with Retry-After
-  abandoned   // the connection closed first (the client went away): stopped, nothing is sent
+  computed,     // `run` returned its response
+  failed,       // `run` threw (a bug): answered 500
+  pool_full,    // the pool's queue was full: never run, 503 with Retry-After
+  over_budget,  // the memory budget was spent (answers waiting), before the run or by its
+                // answer: 503 with Retry-After
+  timed_out,    // HttpLimits::calculation_timeout passed first: stopped, 503 with Retry-After
+  abandoned     // the connection closed first (the client went away): stopped, nothing is sent
 };
 
 // Work the app hands to the calculation pool instead of answering on the loop. Every request
@@ -122,6 +136,7 @@ class EventLoopEngine {
   bool drain(std::chrono::milliseconds limit) const;
 
   [[nodiscard]] std::size_t open_connections() const { return open_connections_.load(); }
+  [[nodiscard]] const MemoryBudget& memory_budget() const { return budget_; }
 
  private:
   struct Connection;
@@ -136,6 +151,7 @@ class EventLoopEngine {
   std::atomic<std::size_t> open_connections_{0};  // adopted and not yet closed
   std::atomic<std::size_t> next_loop_{0};
   std::atomic<std::uint64_t> next_connection_id_{1};
+  MemoryBudget budget_;                       // charged by the connections: outlives them
   std::vector<std::unique_ptr<Loop>> loops_;  // their threads use everything above
   std::unique_ptr<WorkPool> pool_;            // its jobs post to the loops: goes first
 };

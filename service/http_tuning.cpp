@@ -41,7 +41,18 @@ std::size_t effective_max_connections(const HttpTuning& tuning,
 }
 
 std::size_t effective_max_connections(const HttpTuning& tuning) {
-  return effective_max_connections(tuning, read_memory_limit());
+  return effective_max_connections(tuning, tuning.memory_limit_bytes > 0
+                                               ? std::optional(tuning.memory_limit_bytes)
+                                               : read_memory_limit());
+}
+
+std::uint64_t effective_memory_budget(const HttpTuning& tuning, std::size_t max_connections,
+                                      std::size_t calculation_threads,
+                                      std::optional<std::uint64_t> memory_limit_bytes) {
+  const std::uint64_t limit = memory_limit_bytes.value_or(kDefaultMemoryLimitBytes);
+  std::uint64_t held = kProcessBaselineBytes + calculation_threads * kCalculationPeakBytes;
+  if (memory_limit_bytes) held += std::uint64_t{max_connections} * tuning.connection_memory_bytes;
+  return std::max(limit - std::min(limit, held), kMinimumMemoryBudgetBytes);
 }
 
 EventLoopSettings event_loop_settings(const HttpTuning& tuning) {
@@ -55,6 +66,10 @@ EventLoopSettings event_loop_settings(const HttpTuning& tuning) {
   settings.pool.threads =
       tuning.calculation_threads > 0 ? tuning.calculation_threads : settings.loops;
   settings.pool.queue_limit = tuning.calculation_queue_limit;
+  settings.memory_budget_bytes = effective_memory_budget(
+      tuning, settings.max_connections, settings.pool.threads,
+      tuning.memory_limit_bytes > 0 ? std::optional(tuning.memory_limit_bytes)
+                                    : read_memory_limit());
   settings.tcp_nodelay = tuning.tcp_nodelay;
   return settings;
 }

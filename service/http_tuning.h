@@ -39,6 +39,10 @@ struct HttpTuning {
   // everything else (the calculations' programs, the page, the allocator).
   std::size_t connection_memory_bytes = 16 * 1024;
   std::size_t reserved_memory_bytes = 96 * 1024 * 1024;
+  // The memory limit both the connection cap and the memory budget follow: 0, the cgroup's
+  // memory.max (without one, kDefaultMemoryLimitBytes for the budget, and no memory bound on the
+  // connection cap).
+  std::uint64_t memory_limit_bytes = 0;
   int listen_backlog = 1024;
   bool reuse_port = false;  // SO_REUSEPORT: let other processes listen on the same port
   bool tcp_nodelay = true;
@@ -53,6 +57,20 @@ std::size_t effective_event_loop_threads(const HttpTuning& tuning);
 std::size_t effective_max_connections(const HttpTuning& tuning,
                                       std::optional<std::uint64_t> memory_limit_bytes);
 std::size_t effective_max_connections(const HttpTuning& tuning);  // this process's memory limit
+inline constexpr std::uint64_t kDefaultMemoryLimitBytes = 256ULL * 1024 * 1024;
+// What the process holds besides the connections, the calculations and the budget: the binary,
+// the page, the allocator's slack.
+inline constexpr std::uint64_t kProcessBaselineBytes = 32ULL * 1024 * 1024;
+// What one calculation may hold while it runs, at most one per pool thread: the largest program's
+// JSON answer took 63 MiB above the idle process (README.md, "Running").
+inline constexpr std::uint64_t kCalculationPeakBytes = 64ULL * 1024 * 1024;
+inline constexpr std::uint64_t kMinimumMemoryBudgetBytes = 16ULL * 1024 * 1024;
+// The memory budget of the requests' work (service/memory_budget.h): the memory limit (none:
+// kDefaultMemoryLimitBytes) less the process baseline, the calculations running and, under a
+// real limit, what the connection cap lets the connections hold; at least the minimum.
+std::uint64_t effective_memory_budget(const HttpTuning& tuning, std::size_t max_connections,
+                                      std::size_t calculation_threads,
+                                      std::optional<std::uint64_t> memory_limit_bytes);
 // The engine's settings for `tuning` on this machine.
 EventLoopSettings event_loop_settings(const HttpTuning& tuning);
 

@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
   spdlog::info("cutcalc {} listening on http://{}:{}", build_version(), config.host, port);
   spdlog::info("event loops: {}; the CPUs this process may use: {}",
                effective_event_loop_threads(config.http), describe(read_cpu_budget()));
+  const EventLoopSettings settings = event_loop_settings(config.http);
+  spdlog::info(
+      "connections at most: {}; memory budget for large bodies and waiting answers: {} MiB",
+      settings.max_connections, settings.memory_budget_bytes / (1024 * 1024));
   const bool served = app.serve();
   spdlog::info("stopped");
   return served ? 0 : 1;

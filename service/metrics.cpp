@@ -67,7 +67,7 @@ std::string Metrics::render() const {
 }
 
 std::string render_connection_metrics(const ConnectionCounters& counters,
-                                      std::size_t open_connections) {
+                                      std::size_t open_connections, const MemoryBudget& budget) {
   struct Counter {
     const char* name;
     const char* help;
@@ -102,6 +102,10 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
        "Heavy calculations answered 503 with Retry-After because the calculation timeout passed "
        "(the calculation was stopped).",
        counters.calculation_timeouts},
+      {"cutcalc_memory_budget_refused_total",
+       "Requests answered 503 with Retry-After because the memory budget was spent: a large body "
+       "before it was read, or a calculation before it was handed to the pool.",
+       counters.memory_refused},
       {"cutcalc_calculations_abandoned_total",
        "Heavy calculations stopped because their connection closed before the answer.",
        counters.calculations_abandoned},
@@ -136,6 +140,16 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
          "# TYPE cutcalc_http_connection_buffer_bytes gauge\n"
          "cutcalc_http_connection_buffer_bytes "
       << counters.buffer_bytes.load() << '\n';
+  out << "# HELP cutcalc_memory_budget_bytes The memory budget of the requests' work: large bodies "
+         "and answers waiting for their clients.\n"
+         "# TYPE cutcalc_memory_budget_bytes gauge\n"
+         "cutcalc_memory_budget_bytes "
+      << budget.capacity() << '\n';
+  out << "# HELP cutcalc_memory_budget_used_bytes What the requests hold of the memory budget now "
+         "(it may pass the budget by answers computed before it was spent).\n"
+         "# TYPE cutcalc_memory_budget_used_bytes gauge\n"
+         "cutcalc_memory_budget_used_bytes "
+      << budget.used() << '\n';
   out << "# HELP cutcalc_http_open_connections Connections open now.\n"
          "# TYPE cutcalc_http_open_connections gauge\n"
          "cutcalc_http_open_connections "

@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "service/http_connection.h"
+#include "service/memory_budget.h"
 
 namespace cutcalc::service {
 
@@ -44,6 +45,6 @@ class Metrics {
 
 // The HTTP engine's connection counters (service/http_connection.h) in the same format.
 std::string render_connection_metrics(const ConnectionCounters& counters,
-                                      std::size_t open_connections);
+                                      std::size_t open_connections, const MemoryBudget& budget);
 
 }  // namespace cutcalc::service

@@ -34,6 +34,10 @@
 namespace cutcalc::service {
 namespace {
 
+// An answer far larger than the socket's buffers, and a memory budget it spends alone.
+constexpr std::size_t kBigAnswerBytes = 4 * 1024 * 1024;
+constexpr std::uint64_t kSmallBudgetBytes = 1024 * 1024;  // less than a large body
+
 // A safety net against a hang only; no test measures time.
 constexpr auto kPatience = std::chrono::seconds(10);
 constexpr int kPatienceMs = 10000;
@@ -129,26 +133,32 @@ std::string request(const std::string& method, const std::string& path,
 }
 
 // An engine whose "/heavy" goes to the pool and waits at the gate there (answering "heavy
-// <X-Tag>"), "/stuck" spins on the pool until it is stopped, "/throw" throws there (a
-// std::exception, or an int with "X-Tag: int"); refused with 503 + Retry-After when the pool is
-// full; every other path is answered "light" on the loop. The pool has one thread and room for one
-// waiting job. Every settled request's outcome is recorded.
+// <X-Tag>", or X-Size bytes of it), "/stuck" spins on the pool until it is stopped, "/throw" throws
+// there (a std::exception, or an int with "X-Tag: int"); refused with 503 + Retry-After when the
+// pool is full; every other path is answered "light" on the loop. The pool has one thread and room
+// for one waiting job. Every settled request's outcome is recorded.
 class HeldEngine {
  public:
   explicit HeldEngine(std::size_t loops,
-                      std::chrono::milliseconds calculation_timeout = std::chrono::seconds(60)) {
+                      std::chrono::milliseconds calculation_timeout = std::chrono::seconds(60),
+                      std::uint64_t memory_budget_bytes = UINT64_MAX) {
     EventLoopSettings settings;
     settings.loops = loops;
     settings.pool.threads = 1;
     settings.pool.queue_limit = 1;
     settings.pool.nice_increment = 0;
     settings.limits.calculation_timeout = calculation_timeout;
+    settings.limits.large_body_routes = {{"/heavy", 8 * 1024 * 1024}};
+    settings.memory_budget_bytes = memory_budget_bytes;
     engine_ = std::make_unique<EventLoopEngine>(
         settings, [this](const HttpRequest& request) { return serve(request); },
-        [](const EngineError&) {
-          return std::string(
-              "HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n"
-              "Connection: close\r\n\r\n");
+        [](const EngineError& error) {
+          return "HTTP/1.1 " + std::to_string(error.status) +
+                 " Engine\r\nContent-Length: 0\r\nX-Busy: " +
+                 (error.busy == EngineBusy::memory    ? "memory"
+                  : error.busy == EngineBusy::uploads ? "uploads"
+                                                      : "none") +
+                 "\r\nConnection: close\r\n\r\n";
         },
         [] { return ServerPhase::serving; }, counters_);
   }
@@ -188,7 +198,7 @@ class HeldEngine {
             throw std::runtime_error("broken " + tag);
           }
           gate_.pass();
-          return text(200, "heavy " + tag);
+          return text(200, tag == "big" ? std::string(kBigAnswerBytes, 'x') : "heavy " + tag);
         },
         [this](DeferredOutcome outcome, HttpResponse computed, std::string_view failure) {
           {
@@ -201,9 +211,12 @@ class HeldEngine {
             case DeferredOutcome::failed:
               return text(500, "failed: " + std::string(failure));
             case DeferredOutcome::pool_full:
+            case DeferredOutcome::over_budget:
             case DeferredOutcome::timed_out: {
               HttpResponse busy =
-                  text(503, outcome == DeferredOutcome::pool_full ? "busy" : "timed out");
+                  text(503, outcome == DeferredOutcome::pool_full     ? "busy"
+                            : outcome == DeferredOutcome::over_budget ? "over budget"
+                                                                      : "timed out");
               busy.set_header("Retry-After", "1");
               return busy;
             }
@@ -361,6 +374,92 @@ TEST(CalculationPool, ClientThatEndsItsInputStopsItsCalculation) {
   ASSERT_TRUE(eventually([&] { return held.stopped() == 1; }));
   EXPECT_TRUE(client.read_to_close());
   EXPECT_EQ(held.settled(), std::vector{DeferredOutcome::abandoned});
+}
+
+TEST(CalculationPool, SpentBudgetRefusesACalculationBeforeItRuns) {
+  HeldEngine held(1, std::chrono::seconds(60), kSmallBudgetBytes);
+  held.gate().open();
+  Client uploading(held.engine());  // a large body, counted whole from its head
+  uploading.send("POST /heavy HTTP/1.1\r\nHost: test\r\nContent-Length: " +
+                 std::to_string(kSmallBudgetBytes) + "\r\n\r\n" + std::string(1000, 'b'));
+  ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().spent(); }));
+
+  Client refused(held.engine());
+  refused.send(request("GET", "/heavy", "X-Tag: later\r\n"));
+  const testing::ParsedResponses over = refused.read_responses(1);
+  ASSERT_EQ(over.finals(), 1U) << refused.bytes();
+  EXPECT_EQ(over.responses[0].status, 503);
+  EXPECT_EQ(over.responses[0].body, "over budget");
+  EXPECT_EQ(over.responses[0].header("retry-after"), "1");
+  EXPECT_EQ(held.pool().jobs.load(), 0U) << "refused before it ran";
+  EXPECT_EQ(held.counters().memory_refused.load(), 1U);
+
+  uploading.close();
+  ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().used() == 0; }));
+  refused.send(request("GET", "/heavy", "X-Tag: now\r\n"));
+  const testing::ParsedResponses served = refused.read_responses(2);
+  ASSERT_EQ(served.finals(), 2U) << refused.bytes();
+  EXPECT_EQ(served.responses[1].body, "heavy now");
+}
+
+TEST(CalculationPool, AnswerWaitingForItsClientIsCountedUntilItIsRead) {
+  HeldEngine held(1);
+  held.gate().open();
+  Client slow(held.engine());
+  slow.send(request("GET", "/heavy", "X-Tag: big\r\n"));  // and reads nothing yet
+  ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().used() > 0; }));
+  EXPECT_LE(held.engine().memory_budget().used(), kBigAnswerBytes + 1024);
+  const testing::ParsedResponses big = slow.read_responses(1);
+  ASSERT_EQ(big.finals(), 1U);
+  EXPECT_EQ(big.responses[0].body.size(), kBigAnswerBytes);
+  ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().used() == 0; }));
+}
+
+TEST(CalculationPool, AnswerTheBudgetCannotHoldIsDroppedAndAnswered503) {
+  HeldEngine held(1, std::chrono::seconds(60), kBigAnswerBytes * 3 / 2);
+  held.gate().open();
+  Client slow(held.engine());
+  slow.send(request("GET", "/heavy", "X-Tag: big\r\n"));
+  ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().used() > 0; }));
+
+  Client second(held.engine());
+  second.send(request("GET", "/heavy", "X-Tag: big\r\n"));
+  const testing::ParsedResponses over = second.read_responses(1);
+  ASSERT_EQ(over.finals(), 1U) << second.bytes().substr(0, 200);
+  EXPECT_EQ(over.responses[0].status, 503);
+  EXPECT_EQ(over.responses[0].body, "over budget");
+  EXPECT_EQ(held.pool().jobs.load(), 2U) << "it ran, and its answer did not fit";
+  EXPECT_LE(held.engine().memory_budget().used(), kBigAnswerBytes);
+  slow.close();
+  ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().used() == 0; }));
+}
+
+TEST(CalculationPool, LargeBodyTheBudgetCannotTakeIsRefusedBeforeItIsRead) {
+  HeldEngine held(1, std::chrono::seconds(60), kSmallBudgetBytes);
+  Client client(held.engine());
+  client.send("POST /heavy HTTP/1.1\r\nHost: test\r\nContent-Length: 2097152\r\n\r\n");
+  ASSERT_TRUE(client.read_to_close()) << client.bytes();
+  const testing::ParsedResponses answered = testing::parse_responses(client.bytes());
+  ASSERT_EQ(answered.finals(), 1U) << client.bytes();
+  EXPECT_EQ(answered.responses[0].status, 503);
+  EXPECT_EQ(answered.responses[0].header("x-busy"), "memory");
+  EXPECT_EQ(held.counters().memory_refused.load(), 1U);
+  EXPECT_EQ(held.engine().memory_budget().used(), 0U);
+}
+
+TEST(CalculationPool, LargeBodyIsCountedInTheBudgetUntilItsCalculationAnswers) {
+  HeldEngine held(1);
+  Client client(held.engine());
+  const std::string body(200 * 1024, 'b');
+  client.send("POST /heavy HTTP/1.1\r\nHost: test\r\nX-Tag: body\r\nContent-Length: " +
+              std::to_string(body.size()) + "\r\n\r\n" + body);
+  ASSERT_TRUE(held.gate().wait_inside(1));
+  EXPECT_EQ(held.engine().memory_budget().used(), body.size());
+  held.gate().open();
+  const testing::ParsedResponses answered = client.read_responses(1);
+  ASSERT_EQ(answered.finals(), 1U) << client.bytes();
+  EXPECT_EQ(answered.responses[0].body, "heavy body");
+  ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().used() == 0; }));
 }
 
 TEST(CalculationPool, HeadOfADeferredRequestHasContentLengthButNoBody) {

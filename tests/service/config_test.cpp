@@ -138,6 +138,35 @@ TEST(Config, ReusePortRejectsOtherValues) {
   EXPECT_NE(env.message.find("CUTCALC_REUSE_PORT"), std::string::npos) << env.message;
 }
 
+TEST(Config, CalculationTimeoutAndMemoryLimitFlagsSetThem) {
+  const ConfigOutcome defaults = parse({});
+  ASSERT_TRUE(defaults.config);
+  EXPECT_EQ(defaults.config->http.limits.calculation_timeout, std::chrono::milliseconds(30000));
+  EXPECT_EQ(defaults.config->http.memory_limit_bytes, 0U);  // the cgroup's
+
+  const ConfigOutcome flags = parse({"--calculation-timeout-ms", "1", "--memory-limit-mb=64"});
+  ASSERT_TRUE(flags.config) << flags.message;
+  EXPECT_EQ(flags.config->http.limits.calculation_timeout, std::chrono::milliseconds(1));
+  EXPECT_EQ(flags.config->http.memory_limit_bytes, 64U * 1024 * 1024);
+
+  const ConfigOutcome env = parse(
+      {}, {{"CUTCALC_CALCULATION_TIMEOUT_MS", "3600000"}, {"CUTCALC_MEMORY_LIMIT_MB", "1048576"}});
+  ASSERT_TRUE(env.config) << env.message;
+  EXPECT_EQ(env.config->http.limits.calculation_timeout, std::chrono::milliseconds(3600000));
+  EXPECT_EQ(env.config->http.memory_limit_bytes, 1048576ULL * 1024 * 1024);
+
+  for (const std::vector<std::string>& bad :
+       std::vector<std::vector<std::string>>{{"--calculation-timeout-ms", "0"},
+                                             {"--calculation-timeout-ms", "3600001"},
+                                             {"--memory-limit-mb", "63"},
+                                             {"--memory-limit-mb", "x"}}) {
+    const ConfigOutcome outcome = parse(bad);
+    EXPECT_FALSE(outcome.config) << bad[0] << ' ' << bad[1];
+    EXPECT_EQ(outcome.exit_code, 2);
+    EXPECT_NE(outcome.message.find(bad[0]), std::string::npos) << outcome.message;
+  }
+}
+
 TEST(Config, RestartAndConnectionFlagsSetTheirLimits) {
   const ConfigOutcome defaults = parse({});
   ASSERT_TRUE(defaults.config);
