@@ -7,12 +7,14 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "bench/domain/bench_support.h"
 #include "domain/entry/entry_length.h"
 #include "domain/entry/main_time.h"
 
 namespace {
 
 namespace entry = cutcalc::domain::entry;
+using cutcalc::bench::require_ok;
 
 entry::Contour straight(double width, double angle_deg = 90.0) {
   entry::Contour c;
@@ -43,14 +45,6 @@ entry::EntryLengthParams one_pass(double diameter, double offset, const entry::C
   exit.overrun_mm = 2.0;
   p.exit = exit;
   return p;
-}
-
-template <class T>
-void require_ok(const cutcalc::domain::Result<T>& result, const char* what) {
-  if (!result.ok()) {
-    std::cerr << what << ": unexpected error: " << result.error().detail << "\n";
-    std::abort();
-  }
 }
 
 // Straight entry at 60 degrees, straight exit at 75 degrees, band clipped at a side edge.

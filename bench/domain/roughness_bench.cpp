@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/domain/bench_support.h"
 #include "domain/common/milling_sense.h"
 #include "domain/roughness/bore_milling.h"
 #include "domain/roughness/groove_wall.h"
@@ -17,15 +18,8 @@
 namespace {
 
 namespace roughness = cutcalc::domain::roughness;
+using cutcalc::bench::require_ok;
 using cutcalc::domain::MillingSense;
-
-template <class T>
-void require_ok(const cutcalc::domain::Result<T>& result, const char* what) {
-  if (!result.ok()) {
-    std::cerr << what << ": unexpected error: " << result.error().detail << "\n";
-    std::abort();
-  }
-}
 
 // R.5: rho 0.3, phi1 2 deg, S 0.12 (branch B) with the paper's measured 13.2 um as the target.
 void BM_GrooveWallWithTarget(benchmark::State& state) {

@@ -16,6 +16,10 @@ static_assert(kRadPerDeg == std::numbers::pi / 180.0 && kDegPerRad == 180.0 / st
 
 inline double deg_to_rad(double deg) { return deg * kRadPerDeg; }
 inline double rad_to_deg(double rad) { return rad * kDegPerRad; }
+// Radians to degrees as (x * 180) / pi, two roundings: the lathe-flat family's C angles
+// (lathe-flat.md F7) have always been computed so. It differs from rad_to_deg in the last bit for
+// some angles, so the two are not interchangeable without changing printed results.
+inline double rad_times_180_over_pi(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 // sqrt(p^2 - q^2) evaluated as sqrt((p - q)(p + q)) so that tangency (p = q) is exactly 0 and
 // nearly equal arguments keep their digits; tiny negative products from rounding clamp to 0.

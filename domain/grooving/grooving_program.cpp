@@ -5,7 +5,26 @@
 namespace cutcalc::domain::grooving {
 namespace {
 
-using namespace program;
+using program::ConstantSpindleSpeed;
+using program::ConstantSurfaceSpeed;
+using program::Coolant;
+using program::CoolantOff;
+using program::CoolantOn;
+using program::Dialect;
+using program::Dwell;
+using program::fanuc_spindle_words;
+using program::file_name;
+using program::LatheBlock;
+using program::LatheFeed;
+using program::LatheModalLines;
+using program::LatheProgram;
+using program::LatheRapid;
+using program::ProgramOptions;
+using program::SpindleOff;
+using program::Units;
+using program::Warning;
+using program::WarningCode;
+using program::write_lathe_program;
 
 constexpr LatheModalLines kModalLines{
     "{units} G18 G7 G90 G40 G49 G80 G95",  // G7: X is a diameter; G95: feed per revolution

@@ -1,7 +1,8 @@
 #include "domain/lathe_flat/flat_geometry.h"
 
 #include <cmath>
-#include <numbers>
+
+#include "domain/common/numeric.h"
 
 namespace cutcalc::domain::lathe_flat {
 
@@ -38,7 +39,7 @@ std::vector<StepRow> step_table(const FlatSection& flat, int steps) {
     const double alpha = step_angle_rad(alpha_e, steps, i);
     StepRow row;
     row.i = i;
-    row.c_deg = alpha * 180.0 / std::numbers::pi;
+    row.c_deg = rad_times_180_over_pi(alpha);
     row.x_mm = tool_radius_position_mm(flat, alpha);
     if (i < 2 * steps) {
       const double next = step_angle_rad(alpha_e, steps, i + 1);

@@ -1,23 +1,35 @@
 #include "domain/lathe_flat/flat_program.h"
 
 #include <cctype>
-#include <numbers>
 
+#include "domain/common/numeric.h"
 #include "domain/program/dialect_writer.h"
 #include "domain/program/lathe_program.h"
 
 namespace cutcalc::domain::lathe_flat {
 namespace {
 
-using namespace program;
+using program::decimals_of;
+using program::FeedMode;
+using program::FeedModeChange;
+using program::file_name;
+using program::format_fixed;
+using program::InverseTimeFeed;
+using program::LatheBlock;
+using program::LatheFeed;
+using program::LatheModalLines;
+using program::LatheProgram;
+using program::LatheRapid;
+using program::ProgramOptions;
+using program::to_program_units;
+using program::Warning;
+using program::write_lathe_program;
 
 constexpr LatheModalLines kModalLines{
     "{units} G18 G90 G40 G49 G80 G94 G7",
     "{units}\nG18 G40 G80 G90 G94",  // the candidate form; refused by the API (section 6.4)
     "G18 {units} G40 G90 G94 DIAMON",
 };
-
-double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 std::string upper(std::string_view text) {
   std::string out(text);
@@ -35,8 +47,8 @@ std::vector<LatheBlock> blocks(const LatheFlatParams& params, const LatheFlatRes
     const double flat_offset_deg = -k * 360.0 / params.flats;
     for (const FlatSection& layer : flat.layer_sections) {
       const double alpha_e = engagement_half_angle_rad(layer);
-      out.emplace_back(
-          LatheRapid{{std::nullopt, std::nullopt, flat_offset_deg + degrees(alpha_e)}});
+      out.emplace_back(LatheRapid{
+          {std::nullopt, std::nullopt, flat_offset_deg + rad_times_180_over_pi(alpha_e)}});
       out.emplace_back(
           LatheFeed{{2.0 * tool_radius_position_mm(layer, alpha_e), std::nullopt, std::nullopt},
                     params.feed_mm_per_min});
@@ -45,9 +57,9 @@ std::vector<LatheBlock> blocks(const LatheFlatParams& params, const LatheFlatRes
         const double from = step_angle_rad(alpha_e, n, i - 1);
         const double to = step_angle_rad(alpha_e, n, i);
         const double block_min = chord_mm(layer, from, to) / params.feed_mm_per_min;  // T_i
-        out.emplace_back(InverseTimeFeed{
-            {2.0 * tool_radius_position_mm(layer, to), std::nullopt, flat_offset_deg + degrees(to)},
-            1.0 / block_min});
+        out.emplace_back(InverseTimeFeed{{2.0 * tool_radius_position_mm(layer, to), std::nullopt,
+                                          flat_offset_deg + rad_times_180_over_pi(to)},
+                                         1.0 / block_min});
       }
       out.emplace_back(FeedModeChange{FeedMode::per_minute});
       out.emplace_back(LatheRapid{{2.0 * flat.clear_x_mm, std::nullopt, std::nullopt}});
@@ -69,7 +81,7 @@ bool every_step_prints_a_move(const LatheFlatResult& flat, const ProgramOptions&
       const double alpha = step_angle_rad(alpha_e, n, i);
       const std::string x = format_fixed(
           to_program_units(2.0 * tool_radius_position_mm(layer, alpha), options.units), decimals);
-      const std::string c = format_fixed(degrees(alpha), decimals);
+      const std::string c = format_fixed(rad_times_180_over_pi(alpha), decimals);
       if (i > 0 && x == previous_x && c == previous_c) return false;
       previous_x = x;
       previous_c = c;

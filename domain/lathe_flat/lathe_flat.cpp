@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "domain/common/numeric.h"
 #include "domain/lathe_flat/flatness.h"
 #include "domain/program/program_options.h"
 
@@ -14,8 +15,6 @@ namespace {
 using program::number_text;
 using program::Warning;
 using program::WarningCode;
-
-double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 // F1: d from whichever of t, b, d, s was given; error when it is not inside the part.
 Result<double> axis_distance(const LatheFlatParams& p) {
@@ -79,7 +78,7 @@ Result<LatheFlatResult> compute_lathe_flat(const LatheFlatParams& p) {
   if (!(r.flat_depth_mm > 0.0) || !(alpha_e > 0.0)) {
     return make_error(ErrorCode::flat_too_small, "d rounds to R2");
   }
-  r.engagement_half_angle_deg = degrees(alpha_e);
+  r.engagement_half_angle_deg = rad_times_180_over_pi(alpha_e);
   r.flat_width_mm = flat_width_mm(final_flat);  // F3
   r.face_width_mm = r.flat_width_mm;            // F4
   if (p.flats >= 3) {

@@ -12,13 +12,11 @@ namespace cutcalc::domain::machine_time {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kNormalAccelRatio = 0.86602540378443860;  // BLEND_ACC_RATIO_NORMAL
-constexpr double kAngleEpsilon = 1e-6;                     // TP_ANGLE_EPSILON
-constexpr double kPositionEpsilon = 1e-12;                 // TP_POS_EPSILON
-constexpr double kMinArcLength = 1e-6;                     // TP_MIN_ARC_LENGTH
-constexpr double kMinArcAngle = 1e-3;                      // TP_MIN_ARC_ANGLE
-constexpr double kBlendDistanceFraction = 0.5;             // BLEND_DIST_FRACTION
-constexpr double kToleranceRatio = 0.25;                   // tcFindBlendTolerance
+constexpr double kAngleEpsilon = 1e-6;          // TP_ANGLE_EPSILON
+constexpr double kMinArcLength = 1e-6;          // TP_MIN_ARC_LENGTH
+constexpr double kMinArcAngle = 1e-3;           // TP_MIN_ARC_ANGLE
+constexpr double kBlendDistanceFraction = 0.5;  // BLEND_DIST_FRACTION
+constexpr double kToleranceRatio = 0.25;        // tcFindBlendTolerance
 
 bool is_curved(const Segment& s) { return s.shape != Shape::line; }
 

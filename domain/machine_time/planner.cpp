@@ -13,9 +13,6 @@
 namespace cutcalc::domain::machine_time {
 namespace {
 
-constexpr double kDoubleFuzz = 2.2204460492503131e-16;
-constexpr double kNormalAccelRatio = 0.86602540378443860;  // BLEND_ACC_RATIO_NORMAL
-
 // A segment that ends at rest ends inside a servo period; the next one starts with the next
 // period (tpCheckEndCondition removes it, tpActivateSegment runs the next one a cycle later).
 constexpr double kStopPeriods = 0.5;

@@ -10,6 +10,13 @@
 
 namespace cutcalc::domain::machine_time {
 
+// LinuxCNC 2.9's constants that more than one step of the planner uses (segment_builder.cpp,
+// blend.cpp, planner.cpp).
+inline constexpr double kPositionEpsilon = 1e-12;  // TP_POS_EPSILON: shorter segments are dropped
+inline constexpr double kDoubleFuzz = 2.2204460492503131e-16;  // DOUBLE_FUZZ
+inline constexpr double kNormalAccelRatio =
+    0.86602540378443860;  // sqrt(3)/2, BLEND_ACC_RATIO_NORMAL
+
 enum class Shape : std::uint8_t { line, arc, blend_arc };
 
 // How a segment ends (TC_TERM_COND_*).

@@ -9,10 +9,6 @@
 namespace cutcalc::domain::machine_time {
 namespace {
 
-constexpr double kPositionEpsilon = 1e-12;  // TP_POS_EPSILON: shorter segments are dropped
-constexpr double kDoubleFuzz = 2.2204460492503131e-16;
-constexpr double kNormalAccelRatio = 0.86602540378443860;  // sqrt(3)/2, BLEND_ACC_RATIO_NORMAL
-
 Vec3 xyz(const AxisVector& p) { return {p[0], p[1], p[2]}; }
 
 // What the axes allow along a displacement (M4): the velocity and acceleration at which the

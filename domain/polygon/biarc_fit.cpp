@@ -50,16 +50,6 @@ class AngleSteps {
   Eigen::Vector2d value_ = Eigen::Vector2d::Zero();
 };
 
-// Distance from P to the segment [a, b].
-double segment_distance(const Eigen::Vector2d& P, const Eigen::Vector2d& a,
-                        const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  double f = length2 > 0.0 ? (P - a).dot(ab) / length2 : 0.0;
-  f = std::clamp(f, 0.0, 1.0);
-  return (P - (a + f * ab)).norm();
-}
-
 // Distance from P to the polyline of the path samples, by a local descent from segment `hint`
 // (the arc samples advance along the path, so the nearest segment moves monotonically); `hint`
 // is updated to the nearest segment found.

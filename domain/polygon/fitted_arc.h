@@ -2,6 +2,7 @@
 // A circular arc of the fitted centre path (spec polygon-holes.md P19-P21), unrounded, in the
 // units of the caller. Private to domain/polygon.
 
+#include <algorithm>
 #include <optional>
 
 #include <Eigen/Core>
@@ -34,6 +35,16 @@ std::optional<FittedArc> arc_from_tangent(const Eigen::Vector2d& S, const Eigen:
 // 2D cross product a x b.
 inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
+}
+
+// Distance from P to the segment [a, b].
+inline double segment_distance(const Eigen::Vector2d& P, const Eigen::Vector2d& a,
+                               const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  double f = length2 > 0.0 ? (P - a).dot(ab) / length2 : 0.0;
+  f = std::clamp(f, 0.0, 1.0);
+  return (P - (a + f * ab)).norm();
 }
 
 }  // namespace cutcalc::domain::polygon::detail

@@ -13,23 +13,15 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Samples per block: of the exact path (its polyline's chords sag far below any printed digit)
 // and of the printed arc.
-constexpr int kPathSamples = 512;
-constexpr int kArcSamples = 128;
+constexpr int kDeviationPathSamples = 512;
+constexpr int kDeviationArcSamples = 128;
 // Printed-arc samples are compared with the exact path near the same fraction of the block.
 constexpr int kSearchWindow = 24;
 
-double parse(const std::string& text) {
+double parse_number(const std::string& text) {
   double value = 0.0;
   std::from_chars(text.data(), text.data() + text.size(), value);
   return value;
-}
-
-double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                        const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double f = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + f * ab - p).norm();
 }
 
 // One printed block: a spiral from S to E around C, counter-clockwise (G3), as P23 reads it.
@@ -68,29 +60,29 @@ double printed_path_deviation_mm(const CentrePath& path, double d_mm,
                                  const std::vector<LoopBlock>& blocks, const PrintedLoop& loop,
                                  double mm_per_unit) {
   const auto point = [&](const std::string& x, const std::string& y) -> Eigen::Vector2d {
-    return Eigen::Vector2d(parse(x), parse(y)) * mm_per_unit;
+    return Eigen::Vector2d(parse_number(x), parse_number(y)) * mm_per_unit;
   };
   double worst = 0.0;
   Eigen::Vector2d S = point(loop.start_X, loop.start_Y);
-  std::vector<Eigen::Vector2d> exact(kPathSamples + 1, Eigen::Vector2d::Zero());
+  std::vector<Eigen::Vector2d> exact(kDeviationPathSamples + 1, Eigen::Vector2d::Zero());
   for (std::size_t b = 0; b < blocks.size() && b < loop.blocks.size(); ++b) {
     const PrintedBlock& printed = loop.blocks[b];
     const Eigen::Vector2d E = point(printed.X, printed.Y);
     const PrintedArc arc(S, E, S + point(printed.I, printed.J));
     const double t0 = blocks[b].t_start;
     const double t1 = blocks[b].t_end;
-    for (int j = 0; j <= kPathSamples; ++j) {
+    for (int j = 0; j <= kDeviationPathSamples; ++j) {
       const auto i = static_cast<std::size_t>(j);
-      exact[i] = d_mm * path.point(t0 + (t1 - t0) * j / kPathSamples);
+      exact[i] = d_mm * path.point(t0 + (t1 - t0) * j / kDeviationPathSamples);
       worst = std::max(worst, arc.distance(exact[i]));  // exact path -> printed arc
     }
-    for (int k = 0; k <= kArcSamples; ++k) {  // printed arc -> exact path
-      const double f = static_cast<double>(k) / kArcSamples;
+    for (int k = 0; k <= kDeviationArcSamples; ++k) {  // printed arc -> exact path
+      const double f = static_cast<double>(k) / kDeviationArcSamples;
       const Eigen::Vector2d q = arc.at(f);
-      const int centre = static_cast<int>(std::lround(f * kPathSamples));
+      const int centre = static_cast<int>(std::lround(f * kDeviationPathSamples));
       double nearest = std::numeric_limits<double>::infinity();
       for (int j = std::max(0, centre - kSearchWindow);
-           j < std::min(kPathSamples, centre + kSearchWindow); ++j) {
+           j < std::min(kDeviationPathSamples, centre + kSearchWindow); ++j) {
         nearest = std::min(nearest, segment_distance(q, exact[static_cast<std::size_t>(j)],
                                                      exact[static_cast<std::size_t>(j + 1)]));
       }

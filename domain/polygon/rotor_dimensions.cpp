@@ -4,15 +4,10 @@
 
 #include <numbers>
 
+#include "domain/common/numeric.h"
 #include "domain/polygon/rotor.h"
 
 namespace cutcalc::domain::polygon::detail {
-
-namespace {
-
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-
-}  // namespace
 
 RotorDimensions rotor_dimensions(const PolygonShape& shape) {
   const Rotor rotor(shape);

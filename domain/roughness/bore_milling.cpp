@@ -17,8 +17,6 @@ namespace {
 
 using detail::kUmPerMm;
 
-constexpr double kPi = std::numbers::pi;
-
 DomainError feed_too_large(const char* detail) {
   return make_error(ErrorCode::bore_feed_too_large, detail);
 }
@@ -26,8 +24,8 @@ DomainError feed_too_large(const char* detail) {
 // B1: eps = S / (2 pi Rc). 2 pi Rc overflows for Rc above 2.8e307 mm and would make eps 0; only
 // there the quotient is taken in two steps (elsewhere it keeps eps = 1 exact at S = 2 pi Rc).
 double orbit_rate(double S, double Rc) {
-  const double circumference = 2.0 * kPi * Rc;  // of the centre path
-  return std::isfinite(circumference) ? S / circumference : (S / Rc) / (2.0 * kPi);
+  const double circumference = 2.0 * std::numbers::pi * Rc;  // of the centre path
+  return std::isfinite(circumference) ? S / circumference : (S / Rc) / (2.0 * std::numbers::pi);
 }
 
 // B5: R - |P| at the root without forming |P| (at R = 81 mm a cusp of 1.6e-5 mm would keep only
@@ -65,8 +63,8 @@ Result<RootBracket> bracket_root(double R, double r, double n, double S, double 
         "the feed per tooth is too large: successive teeth would meet the bore 180 degrees or "
         "more apart");
   }
-  const double k = eps / (m - eps);                 // k (B3)
-  const double half_alpha = kPi * std::abs(k) / n;  // alpha/2 (B3)
+  const double k = eps / (m - eps);                              // k (B3)
+  const double half_alpha = std::numbers::pi * std::abs(k) / n;  // alpha/2 (B3)
 
   // B.4 step 3
   const double theta_prime_0 = k + r / R;  // theta'(0) (B6)

@@ -12,8 +12,6 @@ namespace cutcalc::domain::roughness {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Halvings of [0, hi] until lo and hi are adjacent doubles: about 55 from a feed near hi, at most
 // about 1100 down to the smallest double.
 constexpr int kMaxHalvings = 2200;
@@ -53,8 +51,8 @@ double bore_milling_feed_limit_mm(const BoreMillingParams& params) {
   const double n = static_cast<double>(params.teeth);                 // n
   // B9: S_top, where eps = 1, alpha = 180 deg (up) or theta'(0) = 0 (down) is first reached.
   const double S_top = params.milling == MillingSense::up
-                           ? 2.0 * kPi * Rc * std::min(1.0, n / (n + 2.0))
-                           : 2.0 * kPi * std::min(Rc, r);
+                           ? 2.0 * std::numbers::pi * Rc * std::min(1.0, n / (n + 2.0))
+                           : 2.0 * std::numbers::pi * std::min(Rc, r);
   BoreMillingParams at = params;
   const auto S_lim = last_passing(0.0, S_top, [&](double S) {
     at.feed_per_rev_mm = S;

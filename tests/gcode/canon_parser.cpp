@@ -11,8 +11,6 @@ namespace cutcalc::test::gcode {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
@@ -172,14 +170,14 @@ ArcGeometry arc_geometry(const CanonMotion& arc) {
   const int extra_turns = arc.turn == 0 ? 0 : std::abs(arc.turn) - 1;
   if (arc.turn >= 0) {
     double sweep = end_angle - g.start_angle;
-    while (sweep <= 0.0) sweep += 2.0 * kPi;  // end = start: a full circle
-    while (sweep > 2.0 * kPi) sweep -= 2.0 * kPi;
-    g.sweep = sweep + 2.0 * kPi * extra_turns;
+    while (sweep <= 0.0) sweep += 2.0 * std::numbers::pi;  // end = start: a full circle
+    while (sweep > 2.0 * std::numbers::pi) sweep -= 2.0 * std::numbers::pi;
+    g.sweep = sweep + 2.0 * std::numbers::pi * extra_turns;
   } else {
     double sweep = g.start_angle - end_angle;
-    while (sweep <= 0.0) sweep += 2.0 * kPi;
-    while (sweep > 2.0 * kPi) sweep -= 2.0 * kPi;
-    g.sweep = -(sweep + 2.0 * kPi * extra_turns);
+    while (sweep <= 0.0) sweep += 2.0 * std::numbers::pi;
+    while (sweep > 2.0 * std::numbers::pi) sweep -= 2.0 * std::numbers::pi;
+    g.sweep = -(sweep + 2.0 * std::numbers::pi * extra_turns);
   }
   g.start_z = arc.start.z;
   g.end_z = arc.end.z;

@@ -10,8 +10,20 @@
 
 namespace {
 
-using namespace cutcalc::test::gcode;
-constexpr double kPi = std::numbers::pi;
+using cutcalc::test::gcode::angle_between;
+using cutcalc::test::gcode::arc_geometry;
+using cutcalc::test::gcode::arc_length_xy;
+using cutcalc::test::gcode::arc_point;
+using cutcalc::test::gcode::ArcGeometry;
+using cutcalc::test::gcode::CanonMotion;
+using cutcalc::test::gcode::CanonProgram;
+using cutcalc::test::gcode::circle_tangent_at_end;
+using cutcalc::test::gcode::circle_tangent_at_start;
+using cutcalc::test::gcode::MotionKind;
+using cutcalc::test::gcode::norm;
+using cutcalc::test::gcode::parse_canon;
+using cutcalc::test::gcode::spiral_tangent;
+using cutcalc::test::gcode::Vec2;
 
 constexpr const char* kOutput = R"canon(    1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)
     2 N..... SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)
@@ -75,17 +87,19 @@ TEST(CanonParser, ReadsMotionsWithTheirStartPositionsFeedsAndC) {
 TEST(CanonParser, ArcGeometryFollowsLinuxCncsSweepRules) {
   const auto arcs = parse_canon(kOutput).arcs();
   const ArcGeometry quarter = arc_geometry(arcs[0]);  // (0,1) -> (-1,0) counter-clockwise
-  EXPECT_NEAR(quarter.sweep, kPi / 2.0, 1e-15);
-  EXPECT_NEAR(arc_length_xy(quarter), kPi / 2.0, 1e-15);
+  EXPECT_NEAR(quarter.sweep, std::numbers::pi / 2.0, 1e-15);
+  EXPECT_NEAR(arc_length_xy(quarter), std::numbers::pi / 2.0, 1e-15);
   const Vec2 middle = arc_point(quarter, 0.5);
   EXPECT_NEAR(middle.x, -std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(middle.y, std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(angle_between(circle_tangent_at_start(quarter), Vec2{-1.0, 0.0}), 0.0, 1e-15);
   EXPECT_NEAR(angle_between(circle_tangent_at_end(quarter), Vec2{0.0, -1.0}), 0.0, 1e-15);
 
-  EXPECT_NEAR(arc_geometry(arcs[1]).sweep, kPi, 1e-15);         // half turn
-  EXPECT_NEAR(arc_geometry(arcs[3]).sweep, 2.0 * kPi, 1e-15);   // end = start: full circle
-  EXPECT_NEAR(arc_geometry(arcs[4]).sweep, -0.5 * kPi, 1e-15);  // clockwise (0,1) -> (1,0)
+  EXPECT_NEAR(arc_geometry(arcs[1]).sweep, std::numbers::pi, 1e-15);  // half turn
+  EXPECT_NEAR(arc_geometry(arcs[3]).sweep, 2.0 * std::numbers::pi,
+              1e-15);  // end = start: full circle
+  EXPECT_NEAR(arc_geometry(arcs[4]).sweep, -0.5 * std::numbers::pi,
+              1e-15);  // clockwise (0,1) -> (1,0)
   EXPECT_NEAR(angle_between(circle_tangent_at_start(arc_geometry(arcs[4])), Vec2{1.0, 0.0}), 0.0,
               1e-15);
 }
@@ -97,12 +111,12 @@ TEST(CanonParser, SpiralArcsInterpolateTheRadiusLinearly) {
   arc.end = {0.0, 1.001, -0.1, 0, 0, 0};
   arc.turn = 1;
   const ArcGeometry g = arc_geometry(arc);
-  EXPECT_NEAR(g.sweep, kPi / 2.0, 1e-15);
+  EXPECT_NEAR(g.sweep, std::numbers::pi / 2.0, 1e-15);
   EXPECT_NEAR(norm(arc_point(g, 0.5)), 1.0005, 1e-15);
-  EXPECT_NEAR(arc_length_xy(g), kPi / 2.0 * 1.0005, 1e-15);
+  EXPECT_NEAR(arc_length_xy(g), std::numbers::pi / 2.0 * 1.0005, 1e-15);
   // The spiral tangent leans outwards by atan(dr / (r dphi)).
   const double lean = angle_between(circle_tangent_at_start(g), spiral_tangent(g, 0.0));
-  EXPECT_NEAR(lean, -std::atan(0.001 / (kPi / 2.0)), 1e-12);
+  EXPECT_NEAR(lean, -std::atan(0.001 / (std::numbers::pi / 2.0)), 1e-12);
 }
 
 TEST(CanonParser, RemovesWorkOffsetsAndFlagsWhatItCannotCheck) {

@@ -19,8 +19,16 @@
 
 namespace {
 
-using namespace cutcalc::test::gcode;
-constexpr double kPi = std::numbers::pi;
+using cutcalc::test::gcode::check_program;
+using cutcalc::test::gcode::ExactCentrePath;
+using cutcalc::test::gcode::FeedCheck;
+using cutcalc::test::gcode::norm;
+using cutcalc::test::gcode::parse_canon;
+using cutcalc::test::gcode::PathCheckReport;
+using cutcalc::test::gcode::ProgramLayout;
+using cutcalc::test::gcode::Rs274Run;
+using cutcalc::test::gcode::run_rs274;
+using cutcalc::test::gcode::Vec2;
 
 std::string fmt4(double value) {
   char buffer[64];
@@ -69,7 +77,7 @@ std::string hand_program(Vec2 start, const std::vector<HandArc>& loop, double de
     const double r1 = norm(arc.end - arc.centre);
     double sweep = std::atan2((arc.end - arc.centre).y, (arc.end - arc.centre).x) -
                    std::atan2((from - arc.centre).y, (from - arc.centre).x);
-    while (sweep <= 0.0) sweep += 2.0 * kPi;
+    while (sweep <= 0.0) sweep += 2.0 * std::numbers::pi;
     lengths.push_back(sweep * (r0 + r1) / 2.0);
     total += lengths.back();
     from = arc.end;
@@ -165,7 +173,7 @@ TEST(GcodeCheckerSelfTest, RejectsAOneDegreeTangentKink) {
   const std::vector<HandArc> halves = {{{0.0, -e}, {h, 0.0}}, {{0.0, e}, {-h, 0.0}}};
   const auto report =
       accepted_then_checked(hand_program({0.0, e}, halves, 0.2), path, hand_layout(2, 0.005));
-  EXPECT_NEAR(report.max_kink_deg, 2.0 * std::atan(h / e) * 180.0 / kPi, 1e-9);
+  EXPECT_NEAR(report.max_kink_deg, 2.0 * std::atan(h / e) * 180.0 / std::numbers::pi, 1e-9);
   EXPECT_GT(report.max_kink_deg, 0.95);
   ASSERT_EQ(report.violations.size(), 1u) << listed(report);  // the kink and nothing else
   EXPECT_TRUE(mentions(report, "kink")) << listed(report);
@@ -201,7 +209,7 @@ TEST(GcodeCheckerSelfTest, ChecksCWordsAgainstTheRotorPhase) {
   const double e = round4(path.e());
   const std::vector<HandArc> circle = {{{0.0, e}, {0.0, 0.0}}};
   const double rpm = 40.0;
-  const double feed = rpm * 11.0 * 2.0 * kPi * e;  // L_p of a full circle of radius e
+  const double feed = rpm * 11.0 * 2.0 * std::numbers::pi * e;  // L_p of a full circle of radius e
   ProgramLayout layout = hand_layout(1, 0.001);
   layout.feed_check = FeedCheck::c_axis;
   layout.spindle_speed_rpm = rpm;

@@ -11,7 +11,6 @@ namespace cutcalc::test::gcode {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr int kSamplesPerPhase = 64;
 constexpr int kSimpsonIntervalsPerPhase = 4000;  // even
 
@@ -20,15 +19,15 @@ constexpr int kSimpsonIntervalsPerPhase = 4000;  // even
 ExactCentrePath::ExactCentrePath(int faces, double inscribed_diameter_mm) : faces_(faces) {
   const double n = faces;
   rho_ = inscribed_diameter_mm / 2.0;
-  side_ = inscribed_diameter_mm * std::tan(kPi / n);
-  circumradius_ = rho_ / std::cos(kPi / n);
-  delta_ = 2.0 * kPi / (n * (n - 1.0));
-  const double ratio = std::sin(delta_ / 2.0) / std::sin(kPi / n);
+  side_ = inscribed_diameter_mm * std::tan(std::numbers::pi / n);
+  circumradius_ = rho_ / std::cos(std::numbers::pi / n);
+  delta_ = 2.0 * std::numbers::pi / (n * (n - 1.0));
+  const double ratio = std::sin(delta_ / 2.0) / std::sin(std::numbers::pi / n);
   q_ = ratio * ratio;
   r_ = rho_ / (1.0 - q_);
   e_ = r_ * q_;
-  a_axis_ = r_ * std::cos(delta_ / 2.0) / std::cos(kPi / n);
-  b_axis_ = r_ * std::sin(delta_ / 2.0) / std::sin(kPi / n);
+  a_axis_ = r_ * std::cos(delta_ / 2.0) / std::cos(std::numbers::pi / n);
+  b_axis_ = r_ * std::sin(delta_ / 2.0) / std::sin(std::numbers::pi / n);
   loop_ = n * delta_;
 
   // P10: the speed |c'(psi)| = sqrt(A^2 sin^2 psi + B^2 cos^2 psi) over one phase, times N.
@@ -60,19 +59,19 @@ ExactCentrePath::Phase ExactCentrePath::phase_of(double t) const {
 
 Vec2 ExactCentrePath::point(double t) const {
   const Phase ph = phase_of(t);
-  const double beta = -kPi / 2.0 + (2.0 * ph.index + 1.0) * kPi / faces_;
+  const double beta = -std::numbers::pi / 2.0 + (2.0 * ph.index + 1.0) * std::numbers::pi / faces_;
   const Vec2 vertex = circumradius_ * unit_at(beta);
   const Vec2 w = unit_at(beta);
-  const Vec2 tangent = unit_at(beta + kPi / 2.0);
+  const Vec2 tangent = unit_at(beta + std::numbers::pi / 2.0);
   const double psi = ph.theta - delta_ / 2.0;
   return vertex - (a_axis_ * std::cos(psi)) * w - (b_axis_ * std::sin(psi)) * tangent;
 }
 
 Vec2 ExactCentrePath::derivative(double t) const {
   const Phase ph = phase_of(t);
-  const double beta = -kPi / 2.0 + (2.0 * ph.index + 1.0) * kPi / faces_;
+  const double beta = -std::numbers::pi / 2.0 + (2.0 * ph.index + 1.0) * std::numbers::pi / faces_;
   const Vec2 w = unit_at(beta);
-  const Vec2 tangent = unit_at(beta + kPi / 2.0);
+  const Vec2 tangent = unit_at(beta + std::numbers::pi / 2.0);
   const double psi = ph.theta - delta_ / 2.0;
   return (a_axis_ * std::sin(psi)) * w - (b_axis_ * std::cos(psi)) * tangent;
 }

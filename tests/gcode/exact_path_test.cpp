@@ -12,7 +12,6 @@ namespace {
 
 using cutcalc::test::gcode::ExactCentrePath;
 using cutcalc::test::gcode::Vec2;
-constexpr double kPi = std::numbers::pi;
 
 struct TableRow {
   int faces;
@@ -75,8 +74,10 @@ TEST(ExactCentrePath, SatisfiesTheContactConditionsP6) {
   for (int faces = 3; faces <= 12; ++faces) {
     const ExactCentrePath path(faces, 20.0);
     for (int p = 0; p < faces; ++p) {
-      const Vec2 u_p = cutcalc::test::gcode::unit_at(-kPi / 2.0 + 2.0 * kPi * p / faces);
-      const Vec2 u_next = cutcalc::test::gcode::unit_at(-kPi / 2.0 + 2.0 * kPi * (p + 1) / faces);
+      const Vec2 u_p = cutcalc::test::gcode::unit_at(-std::numbers::pi / 2.0 +
+                                                     2.0 * std::numbers::pi * p / faces);
+      const Vec2 u_next = cutcalc::test::gcode::unit_at(-std::numbers::pi / 2.0 +
+                                                        2.0 * std::numbers::pi * (p + 1) / faces);
       for (int k = 0; k < 10; ++k) {
         const double theta = path.delta() * (k + 0.5) / 10.0;
         const Vec2 c = path.point(p * path.delta() + theta);

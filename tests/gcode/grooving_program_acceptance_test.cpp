@@ -39,15 +39,22 @@
 
 namespace {
 
-using namespace cutcalc::test::gcode;
 using cutcalc::domain::grooving::mean_minutes_per_revolution;
 using cutcalc::domain::grooving::SpindleMode;
+using cutcalc::test::gcode::CanonCall;
+using cutcalc::test::gcode::expect_same_motion;
+using cutcalc::test::gcode::kCanonStep;
+using cutcalc::test::gcode::kMmPerInch;
+using cutcalc::test::gcode::LatheRun;
+using cutcalc::test::gcode::moves_of;
+using cutcalc::test::gcode::ok_reference_cases;
+using cutcalc::test::gcode::request_with_program;
+using cutcalc::test::gcode::TextMove;
+using cutcalc::test::gcode::write_and_run;
 using nlohmann::json;
 
-constexpr double kMmPerInch = 25.4;
-constexpr double kCanonStep = 1e-4;  // rs274 prints canonical arguments with 4 decimals
-const std::vector<std::string> kDialects = {"linuxcnc", "fanuc", "sinumerik"};
-const std::vector<std::string> kUnits = {"mm", "inch"};
+const std::vector<std::string> kGroovingDialects = {"linuxcnc", "fanuc", "sinumerik"};
+const std::vector<std::string> kGroovingUnits = {"mm", "inch"};
 
 SpindleMode spindle_of(const json& request) {
   SpindleMode spindle;
@@ -182,8 +189,8 @@ TEST(GroovingProgramAcceptance, EveryReferenceProgramInEveryDialectAndUnitIsAcce
   ASSERT_GE(cases.size(), 9U);
   int checked = 0;
   for (const json& reference : cases) {
-    for (const std::string& units : kUnits) {
-      for (const std::string& dialect : kDialects) {
+    for (const std::string& units : kGroovingUnits) {
+      for (const std::string& dialect : kGroovingDialects) {
         SCOPED_TRACE(reference.at("id").get<std::string>() + " " + dialect + " " + units);
         const json request = request_with_program(reference, dialect, units, std::nullopt);
         const LatheRun got =
@@ -194,13 +201,14 @@ TEST(GroovingProgramAcceptance, EveryReferenceProgramInEveryDialectAndUnitIsAcce
       }
     }
   }
-  EXPECT_EQ(checked, static_cast<int>(cases.size() * kUnits.size() * kDialects.size()));
+  EXPECT_EQ(checked,
+            static_cast<int>(cases.size() * kGroovingUnits.size() * kGroovingDialects.size()));
 }
 
 TEST(GroovingProgramAcceptance, DialectsGiveTheSameCanonicalMotionAsLinuxcnc) {
   constexpr double kTolerance = 1.5e-4;
   for (const json& reference : ok_reference_cases("next/grooving-cycle.json")) {
-    for (const std::string& units : kUnits) {
+    for (const std::string& units : kGroovingUnits) {
       const LatheRun linuxcnc =
           write_and_run(&cutcalc::api::grooving::handle_grooving_cycle,
                         request_with_program(reference, "linuxcnc", units, 4), "linuxcnc");

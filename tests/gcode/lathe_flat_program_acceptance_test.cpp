@@ -37,12 +37,18 @@
 
 namespace {
 
-using namespace cutcalc::test::gcode;
+using cutcalc::test::gcode::CanonCall;
+using cutcalc::test::gcode::expect_same_motion;
+using cutcalc::test::gcode::kCanonStep;
+using cutcalc::test::gcode::LatheRun;
+using cutcalc::test::gcode::ok_reference_cases;
+using cutcalc::test::gcode::request_with_program;
+using cutcalc::test::gcode::words_of;
+using cutcalc::test::gcode::write_and_run;
 using nlohmann::json;
 
-constexpr double kCanonStep = 1e-4;  // rs274 prints canonical arguments with 4 decimals
-const std::vector<std::string> kDialects = {"linuxcnc", "sinumerik"};
-const std::vector<std::string> kUnits = {"mm", "inch"};
+const std::vector<std::string> kLatheFlatDialects = {"linuxcnc", "sinumerik"};
+const std::vector<std::string> kLatheFlatUnits = {"mm", "inch"};
 
 // A G1 block of the translated program, from its printed words.
 struct FeedBlock {
@@ -231,8 +237,8 @@ TEST(LatheFlatProgramAcceptance, EveryReferenceProgramInBothDialectsAndUnitsIsAc
   ASSERT_GE(cases.size(), 11U);
   int checked = 0;
   for (const json& reference : cases) {
-    for (const std::string& units : kUnits) {
-      for (const std::string& dialect : kDialects) {
+    for (const std::string& units : kLatheFlatUnits) {
+      for (const std::string& dialect : kLatheFlatDialects) {
         SCOPED_TRACE(reference.at("id").get<std::string>() + " " + dialect + " " + units);
         const json request = request_with_program(reference, dialect, units, std::nullopt);
         const LatheRun got =
@@ -254,13 +260,14 @@ TEST(LatheFlatProgramAcceptance, EveryReferenceProgramInBothDialectsAndUnitsIsAc
       }
     }
   }
-  EXPECT_EQ(checked, static_cast<int>(cases.size() * kUnits.size() * kDialects.size()));
+  EXPECT_EQ(checked,
+            static_cast<int>(cases.size() * kLatheFlatUnits.size() * kLatheFlatDialects.size()));
 }
 
 TEST(LatheFlatProgramAcceptance, SinumerikGivesTheSameCanonicalMotionAsLinuxcnc) {
   constexpr double kTolerance = 1.5e-4;
   for (const json& reference : ok_reference_cases("next/lathe-flat.json")) {
-    for (const std::string& units : kUnits) {
+    for (const std::string& units : kLatheFlatUnits) {
       SCOPED_TRACE(reference.at("id").get<std::string>() + " " + units);
       const LatheRun linuxcnc =
           write_and_run(&cutcalc::api::lathe_flat::handle_lathe_flat,

@@ -25,10 +25,20 @@
 
 namespace {
 
-using namespace cutcalc::test::gcode;
 using cutcalc::domain::polygon::generate_polygon_hole;
 using cutcalc::domain::polygon::PolygonHoleParams;
 using cutcalc::domain::polygon::Synchronization;
+using cutcalc::test::gcode::CanonProgram;
+using cutcalc::test::gcode::check_program;
+using cutcalc::test::gcode::ExactCentrePath;
+using cutcalc::test::gcode::FeedCheck;
+using cutcalc::test::gcode::kMaxKinkDeg;
+using cutcalc::test::gcode::kOutputResolutionMm;
+using cutcalc::test::gcode::parse_canon;
+using cutcalc::test::gcode::PathCheckReport;
+using cutcalc::test::gcode::ProgramLayout;
+using cutcalc::test::gcode::Rs274Run;
+using cutcalc::test::gcode::run_rs274;
 
 constexpr double kDepthMm = 0.2;
 constexpr double kStepDownMm = 0.1;

@@ -30,11 +30,15 @@
 
 namespace {
 
-using namespace cutcalc::test::gcode;
+using cutcalc::test::gcode::kMmPerInch;
+using cutcalc::test::gcode::moves_of;
+using cutcalc::test::gcode::Rs274Run;
+using cutcalc::test::gcode::run_rs274;
+using cutcalc::test::gcode::TextMove;
+using cutcalc::test::gcode::translate_to_linuxcnc;
 using nlohmann::json;
 
-constexpr double kMmPerInch = 25.4;
-const std::vector<std::string> kDialects = {"linuxcnc", "fanuc", "sinumerik"};
+const std::vector<std::string> kPassDialects = {"linuxcnc", "fanuc", "sinumerik"};
 
 std::vector<json> ok_cases() {
   std::ifstream in(std::string(CUTCALC_REFERENCE_DIR) + "/main-time-program.json");
@@ -183,7 +187,7 @@ TEST(PassProgramAcceptance, EveryReferenceProgramInEveryDialectIsAcceptedAndTime
   const auto cases = ok_cases();
   ASSERT_GE(cases.size(), 10U);
   for (const json& reference : cases) {
-    for (const std::string& dialect : kDialects) check_program(reference, dialect, {}, nullptr);
+    for (const std::string& dialect : kPassDialects) check_program(reference, dialect, {}, nullptr);
   }
 }
 
@@ -193,7 +197,7 @@ TEST(PassProgramAcceptance, EqualPassesAndFinishingLevelsInEveryDialectAndUnitAr
     const auto cases = section15_cases(units);
     ASSERT_GE(cases.size(), 7U);
     for (const json& reference : cases) {
-      for (const std::string& dialect : kDialects) {
+      for (const std::string& dialect : kPassDialects) {
         check_program(reference, dialect, {}, nullptr);
         ++checked;
       }

@@ -10,8 +10,7 @@ namespace cutcalc::test::gcode {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = 180.0 / kPi;
+constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr int kMinSamplesPerArc = 200;
 constexpr double kMaxSampleAngle = 0.005;       // rad between arc samples
 constexpr int kCoverageSamplesPerPhase = 100;   // exact-path samples for the two-sided check
@@ -153,7 +152,7 @@ PathCheckReport check_program(const CanonProgram& program, const ExactCentrePath
   if (report.arcs == report.expected_arcs) {
     const double dz = layout.depth_mm / layout.layers;
     const double loop_t = path.loop_parameter();
-    const double c_scale = 180.0 / kPi;
+    const double c_scale = 180.0 / std::numbers::pi;
     report.c_tolerance_deg = kDeg * 2.0 * kPrintedPointError / path.semi_axis_b() + 1e-4;
     double unwrapped_t = 0.0;  // rotor rotation at the current arc end (c_axis check)
     const int coverage_count = path.faces() * kCoverageSamplesPerPhase;
@@ -220,7 +219,8 @@ PathCheckReport check_program(const CanonProgram& program, const ExactCentrePath
           const double local = path.nearest(arcs[i].end.xy()).t;
           double step = std::fmod(local - std::fmod(unwrapped_t, loop_t), loop_t);
           if (step < 0.0) step += loop_t;
-          if (std::abs(geometry[i].sweep) > 1.5 * kPi && step < 0.25 * loop_t) step += loop_t;
+          if (std::abs(geometry[i].sweep) > 1.5 * std::numbers::pi && step < 0.25 * loop_t)
+            step += loop_t;
           unwrapped_t += step;
           report.max_c_error_deg =
               std::max(report.max_c_error_deg, std::abs(arcs[i].end.c + c_scale * unwrapped_t));
@@ -248,8 +248,8 @@ PathCheckReport check_program(const CanonProgram& program, const ExactCentrePath
     if (report.loop_length_spread_mm > kSameValue) {
       violations.push_back("loops differ in length by " + fixed(report.loop_length_spread_mm));
     }
-    const double length_limit =
-        2.0 * kPi * layout.tolerance_mm + 2.0 * kOutputResolutionMm * layout.blocks_per_loop;
+    const double length_limit = 2.0 * std::numbers::pi * layout.tolerance_mm +
+                                2.0 * kOutputResolutionMm * layout.blocks_per_loop;
     if (std::abs(report.printed_loop_length_mm - report.exact_loop_length_mm) > length_limit) {
       violations.push_back("printed loop length " + fixed(report.printed_loop_length_mm) +
                            " mm, exact " + fixed(report.exact_loop_length_mm) + " mm");

@@ -19,10 +19,12 @@
 
 namespace {
 
-using namespace cutcalc::test::gcode;
 using cutcalc::domain::polygon::generate_polygon_hole;
 using cutcalc::domain::polygon::PolygonHoleParams;
 using cutcalc::domain::polygon::Synchronization;
+using cutcalc::test::gcode::Rs274Run;
+using cutcalc::test::gcode::run_rs274;
+using cutcalc::test::gcode::translate_to_linuxcnc;
 namespace program = cutcalc::domain::program;
 
 struct Command {

@@ -10,6 +10,10 @@ namespace cutcalc::test::gcode {
 // The strict.ini written next to every program.
 inline constexpr const char* kStrictIni = "[RS274NGC]\nCENTER_ARC_RADIUS_TOLERANCE_MM = 0.001\n";
 
+// rs274 prints canonical arguments with 4 decimals, in the units of the program.
+inline constexpr double kCanonStep = 1e-4;
+inline constexpr double kMmPerInch = 25.4;
+
 struct Rs274Run {
   bool started = false;    // false: rs274 could not be run (spawn_error says why)
   int exit_code = -1;      // 0 = accepted; 128 + signal when killed by a signal

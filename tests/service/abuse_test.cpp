@@ -53,7 +53,7 @@ constexpr milliseconds kKeepAliveTimeout{5000};
 constexpr milliseconds kRequestDeadline{10000};
 constexpr short kReadable = POLLIN | POLLRDHUP;
 
-const std::string kBody =
+const std::string kEntryBody =
     R"({"cutter_diameter_mm": 20, "offset_mm": 0, "entry": {"contour": "straight", "width_mm": 60, "angle_deg": 90}})";
 
 std::string entry_length_request(std::string_view body) {
@@ -202,7 +202,7 @@ Timed timed_request(int port, milliseconds give_up_after) {
   Timed timed;
   if (!client.connected()) {
     timed.detail = "connect failed";
-  } else if (!client.send_all(entry_length_request(kBody))) {
+  } else if (!client.send_all(entry_length_request(kEntryBody))) {
     timed.detail = "send failed";
   } else if (auto response = client.read_response(give_up_after)) {
     timed.status = response->status;
@@ -413,8 +413,8 @@ void answers_all_in_flight_requests_on(int signal_number) {
   ASSERT_TRUE(limit_problem.empty()) << limit_problem;
   ServiceProcess service(CUTCALC_BINARY, {"--log-level", "info"});
   std::vector<std::unique_ptr<Client>> clients;
-  const std::string request = entry_length_request(kBody);
-  const std::size_t half = request.size() - kBody.size() / 2;
+  const std::string request = entry_length_request(kEntryBody);
+  const std::size_t half = request.size() - kEntryBody.size() / 2;
   for (int i = 0; i < kInFlightAtStop; ++i) {
     clients.push_back(std::make_unique<Client>(service.port()));
     ASSERT_TRUE(clients.back()->connected());

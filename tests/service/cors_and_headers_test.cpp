@@ -17,13 +17,13 @@ std::string exchange(int port, const std::string& request) {
   return connection.read_all(3000);
 }
 
-const std::string kBody =
+const std::string kCorsBody =
     R"({"cutter_diameter_mm": 20, "entry": {"contour": "straight", "width_mm": 60}})";
 
 std::string post_from(const std::string& origin) {
   return "POST /v1/entry-length HTTP/1.1\r\nHost: x\r\nConnection: close\r\nOrigin: " + origin +
-         "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(kBody.size()) +
-         "\r\n\r\n" + kBody;
+         "\r\nContent-Type: application/json\r\nContent-Length: " +
+         std::to_string(kCorsBody.size()) + "\r\n\r\n" + kCorsBody;
 }
 
 TEST(Cors, ConfiguredOriginGetsAllowOriginOnAnswersAndPreflight) {

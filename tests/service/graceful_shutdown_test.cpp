@@ -15,13 +15,13 @@
 namespace cutcalc::testing {
 namespace {
 
-const std::string kBody =
+const std::string kShutdownBody =
     R"({"cutter_diameter_mm": 20, "entry": {"contour": "straight", "width_mm": 60}})";
 
 std::string request_head() {
   return "POST /v1/entry-length HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
          "Content-Length: " +
-         std::to_string(kBody.size()) + "\r\n\r\n";
+         std::to_string(kShutdownBody.size()) + "\r\n\r\n";
 }
 
 void finishes_in_flight_requests_on(int signal_number) {
@@ -32,7 +32,8 @@ void finishes_in_flight_requests_on(int signal_number) {
     connections.push_back(std::make_unique<RawConnection>(service.port()));
     ASSERT_TRUE(connections.back()->connected());
     // Head and half the body: the server is now reading these requests.
-    ASSERT_TRUE(connections.back()->send_all(request_head() + kBody.substr(0, kBody.size() / 2)));
+    ASSERT_TRUE(connections.back()->send_all(request_head() +
+                                             kShutdownBody.substr(0, kShutdownBody.size() / 2)));
   }
   // Let the server pick every connection up before the signal.
   RawConnection probe(service.port());
@@ -41,7 +42,7 @@ void finishes_in_flight_requests_on(int signal_number) {
 
   service.signal(signal_number);
   for (auto& connection : connections) {
-    ASSERT_TRUE(connection->send_all(kBody.substr(kBody.size() / 2)));
+    ASSERT_TRUE(connection->send_all(kShutdownBody.substr(kShutdownBody.size() / 2)));
   }
   for (auto& connection : connections) {
     const std::string reply = connection->read_all(5000);

@@ -25,7 +25,7 @@
 namespace cutcalc::testing {
 namespace {
 
-constexpr int kTimeoutMs = 5000;
+constexpr int kEngineTimeoutMs = 5000;
 
 const std::string kGroove =
     R"({"feed_mm": 0.2, "nose_radius_mm": 0.8, "minor_edge_angle_deg": 10})";
@@ -52,7 +52,7 @@ Outcome send_and_read_to_close(const std::string& bytes, int port = TestServer::
   EXPECT_TRUE(connection.connected());
   connection.send_all(bytes);
   Outcome outcome;
-  outcome.closed = connection.read_until_closed(kTimeoutMs, outcome.bytes);
+  outcome.closed = connection.read_until_closed(kEngineTimeoutMs, outcome.bytes);
   outcome.parsed = parse_responses(outcome.bytes);
   EXPECT_FALSE(outcome.parsed.error) << *outcome.parsed.error << "\n" << outcome.bytes;
   return outcome;
@@ -120,14 +120,14 @@ TEST(HttpEngine, BodyOfA405IsReadAsBodyNotAsTheNextRequest) {
   RawConnection connection(TestServer::shared().port());
   connection.send_all("DELETE /v1/roughness/bore-milling HTTP/1.1\r\nHost: a\r\nContent-Length: " +
                       std::to_string(smuggled.size()) + "\r\n\r\n" + smuggled);
-  const ParsedResponses first = parse_responses(connection.read_responses(1, kTimeoutMs));
+  const ParsedResponses first = parse_responses(connection.read_responses(1, kEngineTimeoutMs));
   ASSERT_EQ(first.finals(), 1U);
   EXPECT_EQ(first.responses[0].status, 405);
   // Nothing more comes (the /version inside the body is not answered), and the connection still
   // serves the client's next real request.
   EXPECT_EQ(connection.read_all(300), "");
   connection.send_all(get_request("/healthz"));
-  const ParsedResponses next = parse_responses(connection.read_responses(1, kTimeoutMs));
+  const ParsedResponses next = parse_responses(connection.read_responses(1, kEngineTimeoutMs));
   ASSERT_EQ(next.finals(), 1U);
   EXPECT_EQ(next.responses[0].status, 200);
   EXPECT_EQ(next.responses[0].body, R"({"status":"ok"})");
@@ -137,7 +137,7 @@ TEST(HttpEngine, BodyOfA404DoesNotSpoilTheNextRequest) {
   RawConnection connection(TestServer::shared().port());
   connection.send_all(post_request("/v1/no-such-thing", kGroove) +
                       post_request("/v1/roughness/groove-wall", kGroove));
-  const ParsedResponses parsed = parse_responses(connection.read_responses(2, kTimeoutMs));
+  const ParsedResponses parsed = parse_responses(connection.read_responses(2, kEngineTimeoutMs));
   ASSERT_EQ(parsed.finals(), 2U);
   EXPECT_EQ(parsed.responses[0].status, 404);
   EXPECT_EQ(parsed.responses[1].status, 200);
@@ -166,7 +166,7 @@ void expect_answered_in_order(const std::string& received, int count) {
 TEST(HttpEngine, HundredPipelinedRequestsInOneWriteAreAnsweredInOrder) {
   RawConnection connection(TestServer::shared().port());
   connection.send_all(numbered_pipeline(100));
-  expect_answered_in_order(connection.read_responses(100, kTimeoutMs), 100);
+  expect_answered_in_order(connection.read_responses(100, kEngineTimeoutMs), 100);
 }
 
 TEST(HttpEngine, PipelinedRequestsInRandomSmallPiecesAreAnsweredInOrder) {
@@ -180,7 +180,7 @@ TEST(HttpEngine, PipelinedRequestsInRandomSmallPiecesAreAnsweredInOrder) {
     at += size;
     if (random() % 8 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
-  expect_answered_in_order(connection.read_responses(100, kTimeoutMs), 100);
+  expect_answered_in_order(connection.read_responses(100, kEngineTimeoutMs), 100);
 }
 
 TEST(HttpEngine, PipelinedCalculationsEachAnswerTheirOwnBody) {
@@ -198,7 +198,7 @@ TEST(HttpEngine, PipelinedCalculationsEachAnswerTheirOwnBody) {
       post_request("/v1/roughness/groove-wall", "") + chunked_feed_025 +
       post_request("/v1/roughness/groove-wall",
                    R"({"feed_mm": 0.2, "nose_radius_mm": 0.8, "minor_edge_angle_deg": 10})"));
-  const ParsedResponses parsed = parse_responses(connection.read_responses(4, kTimeoutMs));
+  const ParsedResponses parsed = parse_responses(connection.read_responses(4, kEngineTimeoutMs));
   ASSERT_EQ(parsed.finals(), 4U);
   EXPECT_EQ(parsed.responses[1].status, 400) << parsed.responses[1].body;  // empty body
   double rz_um[3] = {};
@@ -223,7 +223,7 @@ TEST(HttpEngine, HeadersAreReadInAnyCaseAndTheFirstOfANameCounts) {
       "x-request-id: first-id\r\nX-Request-Id: second-id\r\nACCEPT-LANGUAGE: ru\r\n"
       "Accept-Language: en\r\nContent-Length: " +
       std::to_string(out_of_range.size()) + "\r\n\r\n" + out_of_range);
-  const ParsedResponses parsed = parse_responses(connection.read_responses(1, kTimeoutMs));
+  const ParsedResponses parsed = parse_responses(connection.read_responses(1, kEngineTimeoutMs));
   ASSERT_EQ(parsed.finals(), 1U);
   const auto& answer = parsed.responses[0];
   EXPECT_EQ(answer.status, 422) << answer.body;
@@ -242,7 +242,7 @@ TEST(HttpEngine, ChunkedBodyIsDecodedAndTheConnectionStaysUsable) {
       "application/json\r\nTransfer-Encoding: chunked\r\n\r\n" +
       std::string(sizes[0]) + ";ext\r\n" + kGroove.substr(0, half) + "\r\n" + sizes[1] + "\r\n" +
       kGroove.substr(half) + "\r\n0\r\nTrailer: x\r\n\r\n" + get_request("/healthz"));
-  const ParsedResponses parsed = parse_responses(connection.read_responses(2, kTimeoutMs));
+  const ParsedResponses parsed = parse_responses(connection.read_responses(2, kEngineTimeoutMs));
   ASSERT_EQ(parsed.finals(), 2U);
   EXPECT_EQ(parsed.responses[0].status, 200) << parsed.responses[0].body;
   EXPECT_EQ(parsed.responses[1].status, 200);
@@ -256,7 +256,7 @@ TEST(HttpEngine, ExpectContinueGetsOneInterimResponseBeforeTheBody) {
   connection.send_all(request.substr(0, head));
   EXPECT_EQ(connection.read_all(500), "HTTP/1.1 100 Continue\r\n\r\n");
   connection.send_all(request.substr(head));
-  const ParsedResponses parsed = parse_responses(connection.read_responses(1, kTimeoutMs));
+  const ParsedResponses parsed = parse_responses(connection.read_responses(1, kEngineTimeoutMs));
   ASSERT_EQ(parsed.responses.size(), 1U);  // no second 100 from the library
   EXPECT_EQ(parsed.responses[0].status, 200);
 }
@@ -291,12 +291,12 @@ TEST(HttpEngine, ConnectionsOverTheCapGet503ProblemAndClose) {
     // Both are taken before the third arrives: each is answered once.
     first.send_all(get_request("/healthz"));
     second.send_all(get_request("/healthz"));
-    EXPECT_EQ(parse_responses(first.read_responses(1, kTimeoutMs)).finals(), 1U);
-    EXPECT_EQ(parse_responses(second.read_responses(1, kTimeoutMs)).finals(), 1U);
+    EXPECT_EQ(parse_responses(first.read_responses(1, kEngineTimeoutMs)).finals(), 1U);
+    EXPECT_EQ(parse_responses(second.read_responses(1, kEngineTimeoutMs)).finals(), 1U);
     // The third is refused as it is accepted, before it sends anything.
     RawConnection third(port);
     Outcome refused;
-    refused.closed = third.read_until_closed(kTimeoutMs, refused.bytes);
+    refused.closed = third.read_until_closed(kEngineTimeoutMs, refused.bytes);
     refused.parsed = parse_responses(refused.bytes);
     expect_single_problem(refused, 503, "urn:cutcalc:problem:unavailable");
   }

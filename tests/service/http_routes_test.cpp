@@ -30,7 +30,7 @@
 namespace cutcalc::testing {
 namespace {
 
-constexpr int kTimeoutMs = 5000;
+constexpr int kRoutesTimeoutMs = 5000;
 const std::string kAllowedOrigin = "http://front.example";
 
 struct Exchange {
@@ -97,7 +97,7 @@ HttpResponse send(int port, const std::string& method, const std::string& path,
   RawConnection connection(port);
   EXPECT_TRUE(connection.send_all(request));
   std::string bytes;
-  EXPECT_TRUE(connection.read_until_closed(kTimeoutMs, bytes)) << method << " " << path;
+  EXPECT_TRUE(connection.read_until_closed(kRoutesTimeoutMs, bytes)) << method << " " << path;
   const ParsedResponses parsed = parse_responses(bytes);
   EXPECT_FALSE(parsed.error) << *parsed.error << "\n" << bytes;
   if (parsed.responses.size() != 1) {

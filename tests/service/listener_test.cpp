@@ -28,7 +28,7 @@ namespace cutcalc::service {
 namespace {
 
 // A safety net against a hang only; no test measures time.
-constexpr auto kPatience = std::chrono::seconds(10);
+constexpr auto kListenerPatience = std::chrono::seconds(10);
 
 ListenSettings loopback(int port, bool reuse_port = false) {
   ListenSettings settings;
@@ -114,7 +114,7 @@ TEST(Listener, StopBeforeRunMakesRunReturnAtOnce) {
   std::promise<bool> returned;
   std::thread running([&] { returned.set_value(listener.run([](int sock) { ::close(sock); })); });
   auto result = returned.get_future();
-  if (result.wait_for(kPatience) != std::future_status::ready) {
+  if (result.wait_for(kListenerPatience) != std::future_status::ready) {
     ADD_FAILURE() << "run() did not return after an earlier stop()";
     listener.stop();  // unblock it, so the test ends
   }
@@ -136,7 +136,7 @@ TEST(Listener, RunHandsAcceptedConnectionsOverUntilStopped) {
     });
   });
   EXPECT_TRUE(connects(port));
-  EXPECT_EQ(adopted.get_future().wait_for(kPatience), std::future_status::ready);
+  EXPECT_EQ(adopted.get_future().wait_for(kListenerPatience), std::future_status::ready);
   listener.stop();
   running.join();
   EXPECT_FALSE(connects(port)) << "the listening socket is still open after run() returned";
@@ -170,7 +170,7 @@ Exit run_cutcalc(const std::vector<std::string>& args) {
   }
   ::close(pipe_fds[1]);
   Exit exit;
-  const auto until = std::chrono::steady_clock::now() + kPatience;
+  const auto until = std::chrono::steady_clock::now() + kListenerPatience;
   char buffer[4096];
   for (;;) {  // to EOF: the process (and any thread of it) has ended
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(

@@ -30,6 +30,9 @@ class EndpointProbe {
   api::JsonHandler handler_;
 };
 
+// What EndpointProbe::pointers gives for a 422 answer naming `pointer` alone.
+inline std::set<std::string> only(const std::string& pointer) { return {pointer}; }
+
 // The body of `response` as JSON (discarded when it is not JSON).
 nlohmann::json parsed(const api::ApiResponse& response);
 

@@ -14,6 +14,7 @@
 #include "api/entry/entry_length_endpoint.h"
 #include "support/project_contract.h"
 #include "support/reference_compare.h"
+#include "support/route_paths.h"
 #include "support/sanity_checks.h"
 #include "support/test_server.h"
 
@@ -21,8 +22,6 @@ namespace cutcalc::testing {
 namespace {
 
 using nlohmann::json;
-
-const char* kPath = "/v1/entry-length";
 
 json straight(double width, double angle = 90.0) {
   return {{"contour", "straight"}, {"width_mm", width}, {"angle_deg", angle}};
@@ -59,10 +58,10 @@ std::vector<json> sample_requests() {
 // A valid request and its answer both match openapi.yaml.
 void expect_request_and_answer_conform(const json& request, const JsonReply& reply) {
   for (const auto& violation :
-       test_support::project_contract().check_request("post", kPath, request)) {
+       test_support::project_contract().check_request("post", kEntryLengthPath, request)) {
     ADD_FAILURE() << "request: " << violation;
   }
-  expect_conforms(kPath, reply);
+  expect_conforms(kEntryLengthPath, reply);
 }
 
 std::vector<std::string> position_names(const json& side) {
@@ -75,10 +74,10 @@ std::vector<std::string> position_names(const json& side) {
 
 TEST(EntrySchemeApi, IncludeSchemeAddsASchemeThatMatchesTheContract) {
   for (json request : sample_requests()) {
-    const JsonReply plain = post(kPath, request.dump());
+    const JsonReply plain = post(kEntryLengthPath, request.dump());
     ASSERT_EQ(plain.status, 200) << plain.body;
     request["include_scheme"] = true;
-    const JsonReply reply = post(kPath, request.dump());
+    const JsonReply reply = post(kEntryLengthPath, request.dump());
     ASSERT_EQ(reply.status, 200) << reply.body;
     expect_request_and_answer_conform(request, reply);
 
@@ -116,7 +115,7 @@ TEST(EntrySchemeApi, IncludeSchemeAddsASchemeThatMatchesTheContract) {
 TEST(EntrySchemeApi, ArcContoursAreSampledFinely) {
   json request = sample_requests()[2];  // convex arc entry
   request["include_scheme"] = true;
-  const JsonReply reply = post(kPath, request.dump());
+  const JsonReply reply = post(kEntryLengthPath, request.dump());
   ASSERT_EQ(reply.status, 200) << reply.body;
   const json& entry = reply.json["scheme"]["entry"];
   EXPECT_GE(entry["contour"].size(), 64U);
@@ -134,9 +133,9 @@ TEST(EntrySchemeApi, ArcContoursAreSampledFinely) {
 
 TEST(EntrySchemeApi, FalseOrAbsentLeavesTheAnswerByteForByte) {
   for (json request : sample_requests()) {
-    const JsonReply absent = post(kPath, request.dump());
+    const JsonReply absent = post(kEntryLengthPath, request.dump());
     request["include_scheme"] = false;
-    const JsonReply off = post(kPath, request.dump());
+    const JsonReply off = post(kEntryLengthPath, request.dump());
     ASSERT_EQ(absent.status, 200) << absent.body;
     ASSERT_EQ(off.status, 200) << off.body;
     EXPECT_FALSE(off.json.contains("scheme")) << off.body;
@@ -150,17 +149,17 @@ TEST(EntrySchemeApi, NonBooleanFlagIsAFieldError) {
        {json("true"), json(1), json(0), json(nullptr), json::array({true}), json::object()}) {
     json request = sample_requests()[0];
     request["include_scheme"] = flag;
-    const JsonReply reply = post(kPath, request.dump());
+    const JsonReply reply = post(kEntryLengthPath, request.dump());
     EXPECT_EQ(reply.status, 422) << flag.dump() << ": " << reply.body;
     EXPECT_TRUE(problem_names_pointer(reply.json, "/include_scheme"))
         << flag.dump() << ": " << reply.body;
-    expect_conforms(kPath, reply);
+    expect_conforms(kEntryLengthPath, reply);
   }
   // Listed beside the other field errors, not instead of them.
   json request = sample_requests()[0];
   request["include_scheme"] = "yes";
   request["cutter_diameter_mm"] = -1;
-  const JsonReply reply = post(kPath, request.dump());
+  const JsonReply reply = post(kEntryLengthPath, request.dump());
   EXPECT_EQ(reply.status, 422);
   EXPECT_TRUE(problem_names_pointer(reply.json, "/include_scheme")) << reply.body;
   EXPECT_TRUE(problem_names_pointer(reply.json, "/cutter_diameter_mm")) << reply.body;
@@ -172,7 +171,7 @@ TEST(EntrySchemeApi, ImpossibleInputIsStillTheModelsError) {
                   {"offset_mm", 40},
                   {"entry", straight(20)},
                   {"include_scheme", true}};
-  const JsonReply reply = post(kPath, request.dump());
+  const JsonReply reply = post(kEntryLengthPath, request.dump());
   EXPECT_EQ(reply.status, 422) << reply.body;
   EXPECT_TRUE(problem_names_pointer(reply.json, "")) << reply.body;
 }
@@ -199,8 +198,8 @@ TEST(EntrySchemeApi, ExtremeValidInputsGiveFiniteSchemes) {
   };
   for (json request : extremes) {
     request["include_scheme"] = true;
-    if (expect_sane_answer(kPath, &api::entry::handle_entry_length, request) != 200) {
-      ADD_FAILURE() << request.dump() << "\n" << post(kPath, request.dump()).body;
+    if (expect_sane_answer(kEntryLengthPath, &api::entry::handle_entry_length, request) != 200) {
+      ADD_FAILURE() << request.dump() << "\n" << post(kEntryLengthPath, request.dump()).body;
     }
   }
 }
@@ -246,7 +245,7 @@ TEST(EntrySchemeApi, RandomExtremeRequestsWithSchemeAre200Or422WithFiniteNumbers
       request["exit"] = contour(true, width);
       request["length_mm"] = any();
     }
-    if (expect_sane_answer(kPath, &api::entry::handle_entry_length, request) == 200) {
+    if (expect_sane_answer(kEntryLengthPath, &api::entry::handle_entry_length, request) == 200) {
       ++answered;
     }
   }

@@ -14,13 +14,13 @@
 #include "support/project_contract.h"
 #include "support/reference_cases.h"
 #include "support/reference_compare.h"
+#include "support/route_paths.h"
 
 namespace cutcalc::testing {
 namespace {
 
 using nlohmann::json;
 
-constexpr const char* kMainTime = "/v1/main-time";
 constexpr const char* kProgram = "/v1/main-time/program";
 
 json next_case(const std::string& id) {
@@ -50,7 +50,7 @@ void expect_problem_at(const char* path, const json& request, const std::string&
 // One parser for both endpoints: every section 15 error is the same on the program endpoint.
 TEST(MainTimeFinish, BothEndpointsRefuseWhatSection15Refuses) {
   const json base = next_case("MN-finish");
-  for (const char* path : {kMainTime, kProgram}) {
+  for (const char* path : {kMainTimePath, kProgram}) {
     json request = base;
     request["pass_split"] = "even";
     expect_problem_at(path, request, "/pass_split");
@@ -87,7 +87,7 @@ TEST(MainTimeFinish, BothEndpointsRefuseWhatSection15Refuses) {
 TEST(MainTimeFinish, ProgramWorkingTimeIsTheMainTimeWithTheFinishingLevel) {
   for (const char* id : {"MN-finish", "MN-finish-rpm", "MN-finish-equal", "MN-worked-equal"}) {
     const json request = next_case(id);
-    const JsonReply main_time = post(kMainTime, request.dump());
+    const JsonReply main_time = post(kMainTimePath, request.dump());
     const JsonReply program = post(kProgram, request.dump());
     ASSERT_EQ(program.status, 200) << id << " " << program.body;
     EXPECT_EQ(program.json.at("main_time"), main_time.json) << id;
@@ -159,7 +159,7 @@ TEST(MainTimeFinish, ProgramsKeepTheTextRulesOfEveryDialectAndUnit) {
 TEST(MainTimeFinish, MachineLimitsSeeTheFinishingSpeed) {
   json request = next_case("MN-finish-rpm");  // n 1000, n_f 1500
   request["machine"] = {{"max_spindle_rpm", 1200}};
-  const JsonReply reply = post(kMainTime, request.dump());
+  const JsonReply reply = post(kMainTimePath, request.dump());
   ASSERT_EQ(reply.status, 200) << reply.body;
   ASSERT_EQ(reply.json.at("warnings").size(), 1U) << reply.body;
   EXPECT_EQ(reply.json.at("warnings")[0].at("code"), "spindle_over_limit");

@@ -11,33 +11,26 @@
 
 #include "api/json_endpoint.h"
 #include "support/endpoint_probe.h"
+#include "support/route_paths.h"
 
 namespace cutcalc::testing {
 namespace {
 
 using nlohmann::json;
 
-constexpr const char* kPath = "/v1/grooving/cycle";
-
 // The worked example's request (section 7).
-json paper() {
+json paper_groove() {
   return {{"groove_width_mm", 10.4}, {"start_diameter_mm", 220}, {"groove_depth_mm", 4.8},
           {"groove_left_z_mm", -20}, {"shift_mm", 0.4},          {"cutting_speed_m_per_min", 86},
           {"max_spindle_rpm", 1000}, {"nose_radius_mm", 0.3},    {"minor_edge_angle_deg", 2},
           {"feed_per_rev_mm", 0.12}};
 }
 
-const EndpointProbe kEndpoint{kPath, &api::grooving::handle_grooving_cycle};
-
-api::ApiResponse answer(const json& request, const char* accept = "application/json") {
-  return kEndpoint.answer(request, accept);
-}
-std::set<std::string> pointers(const json& request) { return kEndpoint.pointers(request); }
-
-std::set<std::string> only(const std::string& pointer) { return {pointer}; }
+const EndpointProbe kGroovingCycleEndpoint{kGroovingCyclePath,
+                                           &api::grooving::handle_grooving_cycle};
 
 TEST(GroovingCycleEndpoint, WorkedExampleAnswersWithEveryMemberOfSection37) {
-  const api::ApiResponse response = answer(paper());
+  const api::ApiResponse response = kGroovingCycleEndpoint.answer(paper_groove());
   ASSERT_EQ(response.status, 200) << response.body;
   const json body = parsed(response);
   for (const char* key : {"tool_width_mm",
@@ -99,13 +92,14 @@ TEST(GroovingCycleEndpoint, WorkedExampleAnswersWithEveryMemberOfSection37) {
 
 TEST(GroovingCycleEndpoint, DefaultsOfSection2) {
   // dwell 1 rev, clearance 1 mm, rapid 10000 mm/min; an explicit default gives the same answer.
-  json explicit_defaults = paper();
+  json explicit_defaults = paper_groove();
   explicit_defaults["dwell_revolutions"] = 1;
   explicit_defaults["approach_clearance_mm"] = 1;
   explicit_defaults["rapid_mm_per_min"] = 10000;
-  EXPECT_EQ(answer(explicit_defaults).body, answer(paper()).body);
+  EXPECT_EQ(kGroovingCycleEndpoint.answer(explicit_defaults).body,
+            kGroovingCycleEndpoint.answer(paper_groove()).body);
   // No shift and no tool width: X2 = min(0.4, W/3).
-  const json body = parsed(answer(without(paper(), "shift_mm")));
+  const json body = parsed(kGroovingCycleEndpoint.answer(without(paper_groove(), "shift_mm")));
   EXPECT_NEAR(body.at("shift_mm").get<double>(), 0.4, 1e-12);
   EXPECT_NEAR(body.at("tool_width_mm").get<double>(), 10.0, 1e-12);
 }
@@ -114,139 +108,194 @@ TEST(GroovingCycleEndpoint, PositiveMembersZeroNegativeOrMissingPointAtThemselve
   for (const char* key :
        {"groove_width_mm", "start_diameter_mm", "feed_per_rev_mm", "nose_radius_mm"}) {
     const std::string pointer = std::string("/") + key;
-    EXPECT_EQ(pointers(with(paper(), key, 0)), only(pointer)) << key;
-    EXPECT_EQ(pointers(with(paper(), key, -1)), only(pointer)) << key;
-    EXPECT_EQ(pointers(without(paper(), key)), only(pointer)) << key;
-    EXPECT_EQ(pointers(with(paper(), key, "1")), only(pointer)) << key;
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), key, 0)), only(pointer)) << key;
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), key, -1)), only(pointer)) << key;
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(without(paper_groove(), key)), only(pointer)) << key;
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), key, "1")), only(pointer))
+        << key;
   }
 }
 
 TEST(GroovingCycleEndpoint, LeftWallZIsRequiredAndFinite) {
-  EXPECT_EQ(pointers(without(paper(), "groove_left_z_mm")), only("/groove_left_z_mm"));
-  EXPECT_EQ(pointers(with(paper(), "groove_left_z_mm", nullptr)), only("/groove_left_z_mm"));
-  EXPECT_EQ(pointers(with(paper(), "groove_left_z_mm", "-20")), only("/groove_left_z_mm"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(without(paper_groove(), "groove_left_z_mm")),
+            only("/groove_left_z_mm"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "groove_left_z_mm", nullptr)),
+            only("/groove_left_z_mm"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "groove_left_z_mm", "-20")),
+            only("/groove_left_z_mm"));
   // Any finite number, also zero and positive.
-  EXPECT_EQ(answer(with(paper(), "groove_left_z_mm", 0)).status, 200);
-  EXPECT_EQ(answer(with(paper(), "groove_left_z_mm", 35.5)).status, 200);
-}
-
-TEST(GroovingCycleEndpoint, ExactlyOneOfBottomAndDepth) {
-  EXPECT_EQ(pointers(with(paper(), "bottom_diameter_mm", 210.4)), only("/bottom_diameter_mm"));
-  EXPECT_EQ(pointers(without(paper(), "groove_depth_mm")), only("/groove_depth_mm"));
-  EXPECT_EQ(answer(with(without(paper(), "groove_depth_mm"), "bottom_diameter_mm", 210.4)).status,
+  EXPECT_EQ(kGroovingCycleEndpoint.answer(with(paper_groove(), "groove_left_z_mm", 0)).status, 200);
+  EXPECT_EQ(kGroovingCycleEndpoint.answer(with(paper_groove(), "groove_left_z_mm", 35.5)).status,
             200);
 }
 
+TEST(GroovingCycleEndpoint, ExactlyOneOfBottomAndDepth) {
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "bottom_diameter_mm", 210.4)),
+            only("/bottom_diameter_mm"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(without(paper_groove(), "groove_depth_mm")),
+            only("/groove_depth_mm"));
+  EXPECT_EQ(
+      kGroovingCycleEndpoint
+          .answer(with(without(paper_groove(), "groove_depth_mm"), "bottom_diameter_mm", 210.4))
+          .status,
+      200);
+}
+
 TEST(GroovingCycleEndpoint, BottomAndDepthOutOfRangePointAtThemselves) {
-  const json by_bottom = without(paper(), "groove_depth_mm");
+  const json by_bottom = without(paper_groove(), "groove_depth_mm");
   for (const double bottom : {0.0, -1.0, 220.0, 221.0}) {
-    EXPECT_EQ(pointers(with(by_bottom, "bottom_diameter_mm", bottom)), only("/bottom_diameter_mm"))
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(by_bottom, "bottom_diameter_mm", bottom)),
+              only("/bottom_diameter_mm"))
         << bottom;
   }
   for (const double depth : {0.0, -1.0, 110.0, 111.0}) {
-    EXPECT_EQ(pointers(with(paper(), "groove_depth_mm", depth)), only("/groove_depth_mm")) << depth;
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "groove_depth_mm", depth)),
+              only("/groove_depth_mm"))
+        << depth;
   }
 }
 
 TEST(GroovingCycleEndpoint, ExactlyOneOfSpindleSpeedAndCuttingSpeed) {
-  EXPECT_EQ(pointers(with(paper(), "spindle_speed_rpm", 150)), only("/cutting_speed_m_per_min"));
-  EXPECT_EQ(pointers(without(paper(), "cutting_speed_m_per_min")), only("/spindle_speed_rpm"));
-  json g97 = with(without(paper(), "cutting_speed_m_per_min"), "spindle_speed_rpm", 150);
-  EXPECT_EQ(answer(g97).status, 200);
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "spindle_speed_rpm", 150)),
+            only("/cutting_speed_m_per_min"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(without(paper_groove(), "cutting_speed_m_per_min")),
+            only("/spindle_speed_rpm"));
+  json g97 = with(without(paper_groove(), "cutting_speed_m_per_min"), "spindle_speed_rpm", 150);
+  EXPECT_EQ(kGroovingCycleEndpoint.answer(g97).status, 200);
   // With n the limit is optional.
-  EXPECT_EQ(answer(without(g97, "max_spindle_rpm")).status, 200);
+  EXPECT_EQ(kGroovingCycleEndpoint.answer(without(g97, "max_spindle_rpm")).status, 200);
 }
 
 TEST(GroovingCycleEndpoint, SpeedsAndTheLimitMustBePositiveAndTheLimitComesWithV) {
-  EXPECT_EQ(pointers(with(paper(), "cutting_speed_m_per_min", 0)),
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "cutting_speed_m_per_min", 0)),
             only("/cutting_speed_m_per_min"));
-  const json g97 = with(without(paper(), "cutting_speed_m_per_min"), "spindle_speed_rpm", 150);
-  EXPECT_EQ(pointers(with(g97, "spindle_speed_rpm", -5)), only("/spindle_speed_rpm"));
-  EXPECT_EQ(pointers(with(paper(), "max_spindle_rpm", 0)), only("/max_spindle_rpm"));
-  EXPECT_EQ(pointers(with(g97, "max_spindle_rpm", -1)), only("/max_spindle_rpm"));
-  EXPECT_EQ(pointers(without(paper(), "max_spindle_rpm")), only("/max_spindle_rpm"));
+  const json g97 =
+      with(without(paper_groove(), "cutting_speed_m_per_min"), "spindle_speed_rpm", 150);
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(g97, "spindle_speed_rpm", -5)),
+            only("/spindle_speed_rpm"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "max_spindle_rpm", 0)),
+            only("/max_spindle_rpm"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(g97, "max_spindle_rpm", -1)),
+            only("/max_spindle_rpm"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(without(paper_groove(), "max_spindle_rpm")),
+            only("/max_spindle_rpm"));
 }
 
 TEST(GroovingCycleEndpoint, ShiftAndToolWidthInsideTheGroove) {
   for (const double value : {0.0, -0.4, 10.4, 11.0}) {
-    EXPECT_EQ(pointers(with(paper(), "shift_mm", value)), only("/shift_mm")) << value;
-    EXPECT_EQ(pointers(with(without(paper(), "shift_mm"), "tool_width_mm", value)),
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "shift_mm", value)),
+              only("/shift_mm"))
+        << value;
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(
+                  with(without(paper_groove(), "shift_mm"), "tool_width_mm", value)),
               only("/tool_width_mm"))
         << value;
   }
 }
 
 TEST(GroovingCycleEndpoint, AnglesDwellClearanceAndRapidOutOfRange) {
-  EXPECT_EQ(pointers(with(paper(), "minor_edge_angle_deg", -0.1)), only("/minor_edge_angle_deg"));
-  EXPECT_EQ(pointers(with(paper(), "minor_edge_angle_deg", 90)), only("/minor_edge_angle_deg"));
-  EXPECT_EQ(answer(with(paper(), "minor_edge_angle_deg", 0)).status, 200);
-  EXPECT_EQ(pointers(with(paper(), "dwell_revolutions", -1)), only("/dwell_revolutions"));
-  EXPECT_EQ(answer(with(paper(), "dwell_revolutions", 0)).status, 200);
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "minor_edge_angle_deg", -0.1)),
+            only("/minor_edge_angle_deg"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "minor_edge_angle_deg", 90)),
+            only("/minor_edge_angle_deg"));
+  EXPECT_EQ(kGroovingCycleEndpoint.answer(with(paper_groove(), "minor_edge_angle_deg", 0)).status,
+            200);
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "dwell_revolutions", -1)),
+            only("/dwell_revolutions"));
+  EXPECT_EQ(kGroovingCycleEndpoint.answer(with(paper_groove(), "dwell_revolutions", 0)).status,
+            200);
   for (const char* key : {"approach_clearance_mm", "rapid_mm_per_min"}) {
-    EXPECT_EQ(pointers(with(paper(), key, 0)), only(std::string("/") + key)) << key;
-    EXPECT_EQ(pointers(with(paper(), key, -2)), only(std::string("/") + key)) << key;
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), key, 0)),
+              only(std::string("/") + key))
+        << key;
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), key, -2)),
+              only(std::string("/") + key))
+        << key;
   }
 }
 
 TEST(GroovingCycleEndpoint, ImpossibleCombinationsPointAtTheWholeRequest) {
   // B + X2 != W; B <= X2; N > 20000; a word that prints as zero.
-  const api::ApiResponse mismatch = answer(with(paper(), "tool_width_mm", 9.9));
-  EXPECT_EQ(pointers(with(paper(), "tool_width_mm", 9.9)), only(""));
+  const api::ApiResponse mismatch =
+      kGroovingCycleEndpoint.answer(with(paper_groove(), "tool_width_mm", 9.9));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "tool_width_mm", 9.9)), only(""));
   EXPECT_NE(mismatch.body.find("tool_and_shift_mismatch"), std::string::npos) << mismatch.body;
-  EXPECT_EQ(pointers(with(with(paper(), "groove_width_mm", 1.0), "shift_mm", 0.5)), only(""));
-  json deep = with(with(paper(), "start_diameter_mm", 1000), "feed_per_rev_mm", 0.01);
-  EXPECT_EQ(answer(with(deep, "groove_depth_mm", 200)).status, 200);
-  const api::ApiResponse too_many = answer(with(deep, "groove_depth_mm", 200.01));
-  EXPECT_EQ(pointers(with(deep, "groove_depth_mm", 200.01)), only(""));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(
+                with(with(paper_groove(), "groove_width_mm", 1.0), "shift_mm", 0.5)),
+            only(""));
+  json deep = with(with(paper_groove(), "start_diameter_mm", 1000), "feed_per_rev_mm", 0.01);
+  EXPECT_EQ(kGroovingCycleEndpoint.answer(with(deep, "groove_depth_mm", 200)).status, 200);
+  const api::ApiResponse too_many =
+      kGroovingCycleEndpoint.answer(with(deep, "groove_depth_mm", 200.01));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(deep, "groove_depth_mm", 200.01)), only(""));
   EXPECT_NE(too_many.body.find("20000"), std::string::npos) << too_many.body;
-  EXPECT_EQ(pointers(with(paper(), "dwell_revolutions", 1e-6)), only(""));
-  EXPECT_EQ(pointers(with(with(paper(), "feed_per_rev_mm", 0.00004), "groove_depth_mm", 0.4)),
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "dwell_revolutions", 1e-6)),
+            only(""));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(
+                with(with(paper_groove(), "feed_per_rev_mm", 0.00004), "groove_depth_mm", 0.4)),
             only(""));
 }
 
 TEST(GroovingCycleEndpoint, ProgramMembersOfALatheProgram) {
   // tool_number 1..99 (a turret), integer.
   for (const json& tool : {json(0), json(100), json(7.5), json("7")}) {
-    EXPECT_EQ(pointers(with_program(paper(), {{"tool_number", tool}})),
-              only("/program/tool_number"))
+    EXPECT_EQ(
+        kGroovingCycleEndpoint.pointers(with_program(paper_groove(), {{"tool_number", tool}})),
+        only("/program/tool_number"))
         << tool;
   }
-  EXPECT_EQ(answer(with_program(paper(), {{"dialect", "fanuc"}, {"tool_number", 99}})).status, 200);
-  // G58/G59 are no work offsets on Sinumerik; fine elsewhere.
-  EXPECT_EQ(pointers(with_program(paper(), {{"dialect", "sinumerik"}, {"work_offset", "G58"}})),
-            only("/program/work_offset"));
-  EXPECT_EQ(pointers(with_program(paper(), {{"dialect", "sinumerik"}, {"work_offset", "G59"}})),
-            only("/program/work_offset"));
-  EXPECT_EQ(answer(with_program(paper(), {{"dialect", "fanuc"}, {"work_offset", "G59"}})).status,
+  EXPECT_EQ(kGroovingCycleEndpoint
+                .answer(with_program(paper_groove(), {{"dialect", "fanuc"}, {"tool_number", 99}}))
+                .status,
             200);
+  // G58/G59 are no work offsets on Sinumerik; fine elsewhere.
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(
+                with_program(paper_groove(), {{"dialect", "sinumerik"}, {"work_offset", "G58"}})),
+            only("/program/work_offset"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(
+                with_program(paper_groove(), {{"dialect", "sinumerik"}, {"work_offset", "G59"}})),
+            only("/program/work_offset"));
+  EXPECT_EQ(
+      kGroovingCycleEndpoint
+          .answer(with_program(paper_groove(), {{"dialect", "fanuc"}, {"work_offset", "G59"}}))
+          .status,
+      200);
   // program_number is Fanuc's.
   for (const char* dialect : {"linuxcnc", "sinumerik"}) {
-    EXPECT_EQ(pointers(with_program(paper(), {{"dialect", dialect}, {"program_number", 12}})),
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(
+                  with_program(paper_groove(), {{"dialect", dialect}, {"program_number", 12}})),
               only("/program/program_number"))
         << dialect;
   }
-  EXPECT_EQ(answer(with_program(paper(), {{"dialect", "fanuc"}, {"program_number", 12}})).status,
-            200);
+  EXPECT_EQ(
+      kGroovingCycleEndpoint
+          .answer(with_program(paper_groove(), {{"dialect", "fanuc"}, {"program_number", 12}}))
+          .status,
+      200);
   // The milling programs' members are unknown here.
   for (const char* key : {"tool_length_offset", "safe_z_mm", "clearance_mm",
                           "plunge_feed_mm_per_min", "rapid_mm_per_min"}) {
     const json value = std::string(key) == "tool_length_offset" ? json(true) : json(5);
-    EXPECT_EQ(pointers(with_program(paper(), {{"tool_number", 3}, {key, value}})),
+    EXPECT_EQ(kGroovingCycleEndpoint.pointers(
+                  with_program(paper_groove(), {{"tool_number", 3}, {key, value}})),
               only(std::string("/program/") + key))
         << key;
   }
 }
 
 TEST(GroovingCycleEndpoint, UnknownAndNonNumericMembersPointAtThemselves) {
-  EXPECT_EQ(pointers(with(paper(), "extra", 1)), only("/extra"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "extra", 1)), only("/extra"));
   // The wide-groove scheme (Fig. 1b) is not part of the endpoint.
-  EXPECT_EQ(pointers(with(paper(), "swivel_angle_deg", 5)), only("/swivel_angle_deg"));
-  EXPECT_EQ(pointers(with(paper(), "shift_mm", "0.4")), only("/shift_mm"));
-  EXPECT_EQ(pointers(with(paper(), "dwell_revolutions", true)), only("/dwell_revolutions"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "swivel_angle_deg", 5)),
+            only("/swivel_angle_deg"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "shift_mm", "0.4")),
+            only("/shift_mm"));
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(with(paper_groove(), "dwell_revolutions", true)),
+            only("/dwell_revolutions"));
   // Several at once: all listed.
-  json broken = with(with(paper(), "extra", 1), "groove_width_mm", 0);
+  json broken = with(with(paper_groove(), "extra", 1), "groove_width_mm", 0);
   broken.erase("nose_radius_mm");
-  EXPECT_EQ(pointers(broken),
+  EXPECT_EQ(kGroovingCycleEndpoint.pointers(broken),
             (std::set<std::string>{"/extra", "/groove_width_mm", "/nose_radius_mm"}));
 }
 
@@ -259,19 +308,20 @@ TEST(GroovingCycleEndpoint, PlainTextAnswerIsTheProgramWithItsFileName) {
                         Case{{{"dialect", "fanuc"}, {"program_number", 12}}, "O0012.nc"},
                         Case{{{"dialect", "sinumerik"}, {"name", "GROOVE_1"}}, "GROOVE_1.MPF"},
                         Case{{{"name", "RING_2"}, {"units", "inch"}}, "RING_2.ngc"}}) {
-    kEndpoint.expect_program_download(with_program(paper(), c.program), c.file_name);
+    kGroovingCycleEndpoint.expect_program_download(with_program(paper_groove(), c.program),
+                                                   c.file_name);
   }
 }
 
 TEST(GroovingCycleEndpoint, WarningsAreListedWithCodeAndDetailInOrder) {
   // Fanuc G97 n 150.5 over a 140 rpm limit, X2 0.6, N = 2.
-  json request = without(paper(), "cutting_speed_m_per_min");
+  json request = without(paper_groove(), "cutting_speed_m_per_min");
   request["spindle_speed_rpm"] = 150.5;
   request["max_spindle_rpm"] = 140;
   request["shift_mm"] = 0.6;
   request["groove_depth_mm"] = 0.24;
   request["program"] = {{"dialect", "fanuc"}};
-  const json body = parsed(answer(request));
+  const json body = parsed(kGroovingCycleEndpoint.answer(request));
   ASSERT_TRUE(body.contains("warnings")) << body.dump();
   std::vector<std::string> codes;
   for (const auto& warning : body.at("warnings")) {

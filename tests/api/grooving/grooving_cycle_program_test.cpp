@@ -11,15 +11,14 @@
 #include "support/program_text_rules.h"
 #include "support/project_contract.h"
 #include "support/reference_cases.h"
+#include "support/route_paths.h"
 
 namespace cutcalc::testing {
 namespace {
 
 using nlohmann::json;
 
-constexpr const char* kPath = "/v1/grooving/cycle";
-
-std::vector<json> ok_requests() {
+std::vector<json> grooving_ok_requests() {
   std::vector<json> requests;
   for (const ReferenceCase& c : load_cases("next/grooving-cycle.json")) {
     if (c.data.at("expect").at("status") == 200) requests.push_back(c.data.at("request"));
@@ -46,7 +45,7 @@ TEST(GroovingCycleProgram, ReferenceCasesAreLoadedOnce) {
 
 TEST(GroovingCycleProgram, EveryReferenceGrooveInEveryDialectAndUnitKeepsTheTextRules) {
   int checked = 0;
-  for (const json& base : ok_requests()) {
+  for (const json& base : grooving_ok_requests()) {
     for (const char* dialect : {"linuxcnc", "fanuc", "sinumerik"}) {
       for (const char* units : {"mm", "inch"}) {
         json request = base;
@@ -56,8 +55,8 @@ TEST(GroovingCycleProgram, EveryReferenceGrooveInEveryDialectAndUnitKeepsTheText
                               {"coolant", "flood"},
                               {"name", "RING_1"}};
         SCOPED_TRACE(request.dump());
-        const JsonReply reply = post(kPath, request.dump());
-        expect_conforms(kPath, reply);
+        const JsonReply reply = post(kGroovingCyclePath, request.dump());
+        expect_conforms(kGroovingCyclePath, reply);
         ASSERT_EQ(reply.status, 200) << reply.body;
         const std::string program = reply.json.at("program").get<std::string>();
         expect_text_rules(program, dialect);

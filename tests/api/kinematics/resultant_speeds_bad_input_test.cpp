@@ -8,6 +8,7 @@
 
 #include "api/kinematics/resultant_speeds_endpoint.h"
 #include "support/reference_compare.h"
+#include "support/route_paths.h"
 #include "support/sanity_checks.h"
 #include "support/test_server.h"
 
@@ -16,22 +17,20 @@ namespace {
 
 using nlohmann::json;
 
-const char* kPath = "/v1/resultant-speeds";
-
-json sample() {
+json bad_input_sample() {
   return {{"tool_radius_mm", 10},       {"workpiece_radius_mm", 16}, {"flat_depth_mm", 1},
           {"tool_speed_rpm", 3000},     {"workpiece_speed_rpm", 10}, {"milling", "up"},
           {"tool_feed_mm_per_min", 100}};
 }
 
 TEST(ResultantSpeedsBadInput, EveryFieldErrorIsListedWithItsPointer) {
-  json request = sample();
+  json request = bad_input_sample();
   request["tool_radius_mm"] = "10";
   request["workpiece_speed_rpm"] = -1;
   request["milling"] = "climb";
   request["edge_inclination_deg"] = 90;
   request["contact_angles_deg"] = json::array({0, "x", nullptr});
-  const JsonReply reply = post(kPath, request.dump());
+  const JsonReply reply = post(kResultantSpeedsPath, request.dump());
   EXPECT_EQ(reply.status, 422) << reply.body;
   for (const char* pointer :
        {"/tool_radius_mm", "/workpiece_speed_rpm", "/milling", "/edge_inclination_deg",
@@ -42,25 +41,26 @@ TEST(ResultantSpeedsBadInput, EveryFieldErrorIsListedWithItsPointer) {
 
 TEST(ResultantSpeedsBadInput, EmptyOrNonListAnglesNameTheList) {
   for (const json& angles : {json::array(), json("0"), json::object()}) {
-    json request = sample();
+    json request = bad_input_sample();
     request["contact_angles_deg"] = angles;
-    const JsonReply reply = post(kPath, request.dump());
+    const JsonReply reply = post(kResultantSpeedsPath, request.dump());
     EXPECT_EQ(reply.status, 422);
     EXPECT_TRUE(problem_names_pointer(reply.json, "/contact_angles_deg")) << reply.body;
   }
 }
 
 TEST(ResultantSpeedsBadInput, OverflowingAngleNamesItsIndex) {
-  const std::string body = sample().dump().insert(1, R"("contact_angles_deg": [0, 1e400], )");
-  const JsonReply reply = post(kPath, body);
+  const std::string body =
+      bad_input_sample().dump().insert(1, R"("contact_angles_deg": [0, 1e400], )");
+  const JsonReply reply = post(kResultantSpeedsPath, body);
   EXPECT_EQ(reply.status, 422) << reply.body;
   EXPECT_TRUE(problem_names_pointer(reply.json, "/contact_angles_deg/1")) << reply.body;
 }
 
 TEST(ResultantSpeedsBadInput, NeitherPlacementIsACombinationError) {
-  json request = sample();
+  json request = bad_input_sample();
   request.erase("flat_depth_mm");
-  const JsonReply reply = post(kPath, request.dump());
+  const JsonReply reply = post(kResultantSpeedsPath, request.dump());
   EXPECT_EQ(reply.status, 422);
   EXPECT_TRUE(problem_names_pointer(reply.json, ""));
 }
@@ -77,7 +77,7 @@ TEST(ResultantSpeedsBadInput, RandomExtremeRequestsAreAnsweredSanely) {
   };
   int answered = 0;
   for (int i = 0; i < 1500 && !HasFailure(); ++i) {
-    json request = sample();
+    json request = bad_input_sample();
     for (const char* key : {"tool_radius_mm", "workpiece_radius_mm", "flat_depth_mm",
                             "tool_speed_rpm", "workpiece_speed_rpm", "tool_feed_mm_per_min"}) {
       if (std::uniform_int_distribution<int>(0, 3)(engine) == 0) {
@@ -92,7 +92,8 @@ TEST(ResultantSpeedsBadInput, RandomExtremeRequestsAreAnsweredSanely) {
       request["contact_angles_deg"] = json::array({any() * 5.0, 0.0, -any()});
     }
     request["milling"] = std::uniform_int_distribution<int>(0, 1)(engine) == 0 ? "up" : "down";
-    if (expect_sane_answer(kPath, &api::kinematics::handle_resultant_speeds, request) == 200) {
+    if (expect_sane_answer(kResultantSpeedsPath, &api::kinematics::handle_resultant_speeds,
+                           request) == 200) {
       ++answered;
     }
   }

@@ -17,7 +17,8 @@ namespace {
 
 using nlohmann::json;
 
-const EndpointProbe kEndpoint{"/v1/program-time", &api::machine_time::handle_program_time};
+const EndpointProbe kProgramTimeEndpoint{"/v1/program-time",
+                                         &api::machine_time::handle_program_time};
 
 json router_axes() {
   return {{"x", {{"max_velocity_mm_per_min", 12000}, {"max_acceleration_mm_per_s2", 1000}}},
@@ -25,15 +26,13 @@ json router_axes() {
           {"z", {{"max_velocity_mm_per_min", 8000}, {"max_acceleration_mm_per_s2", 600}}}};
 }
 
-json square() {
+json square_program() {
   return {{"program", "G21 G90 G17 G61.1\nF4000\nG1 X60\nG1 Y60\nG1 X0\nG1 Y0\nM2\n"},
           {"machine", {{"axes", router_axes()}, {"max_feed_mm_per_min", 12000}}}};
 }
 
-std::set<std::string> only(const std::string& pointer) { return {pointer}; }
-
 TEST(ProgramTimeEndpoint, AnswersEveryMemberOfSection6) {
-  const api::ApiResponse response = kEndpoint.answer(square());
+  const api::ApiResponse response = kProgramTimeEndpoint.answer(square_program());
   ASSERT_EQ(response.status, 200) << response.body;
   const json body = parsed(response);
   for (const char* key :
@@ -55,7 +54,8 @@ TEST(ProgramTimeEndpoint, AnswersEveryMemberOfSection6) {
 }
 
 TEST(ProgramTimeEndpoint, ProfileHasTheAskedNumberOfPoints) {
-  const api::ApiResponse response = kEndpoint.answer(with(square(), "profile_points", 7));
+  const api::ApiResponse response =
+      kProgramTimeEndpoint.answer(with(square_program(), "profile_points", 7));
   ASSERT_EQ(response.status, 200) << response.body;
   const json body = parsed(response);
   ASSERT_EQ(body["profile"].size(), 7U);
@@ -65,26 +65,30 @@ TEST(ProgramTimeEndpoint, ProfileHasTheAskedNumberOfPoints) {
 }
 
 TEST(ProgramTimeEndpoint, RequestPointers) {
-  EXPECT_EQ(kEndpoint.pointers(without(square(), "program")), only("/program"));
-  EXPECT_EQ(kEndpoint.pointers(with(square(), "program", 5)), only("/program"));
-  EXPECT_EQ(kEndpoint.pointers(without(square(), "machine")), only("/machine"));
-  EXPECT_EQ(kEndpoint.pointers(with(square(), "dialect", "heidenhain")), only("/dialect"));
-  EXPECT_EQ(kEndpoint.pointers(with(square(), "profile_points", 1)), only("/profile_points"));
-  EXPECT_EQ(kEndpoint.pointers(with(square(), "profile_points", 2001)), only("/profile_points"));
-  EXPECT_EQ(kEndpoint.pointers(with(square(), "extra", 1)), only("/extra"));
-  json no_axes = square();
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(without(square_program(), "program")), only("/program"));
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(with(square_program(), "program", 5)), only("/program"));
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(without(square_program(), "machine")), only("/machine"));
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(with(square_program(), "dialect", "heidenhain")),
+            only("/dialect"));
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(with(square_program(), "profile_points", 1)),
+            only("/profile_points"));
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(with(square_program(), "profile_points", 2001)),
+            only("/profile_points"));
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(with(square_program(), "extra", 1)), only("/extra"));
+  json no_axes = square_program();
   no_axes["machine"].erase("axes");
-  EXPECT_EQ(kEndpoint.pointers(no_axes), only("/machine/axes"));
-  json half_axis = square();
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(no_axes), only("/machine/axes"));
+  json half_axis = square_program();
   half_axis["machine"]["axes"]["x"].erase("max_acceleration_mm_per_s2");
-  EXPECT_EQ(kEndpoint.pointers(half_axis), only("/machine/axes/x/max_acceleration_mm_per_s2"));
-  json servo = square();
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(half_axis),
+            only("/machine/axes/x/max_acceleration_mm_per_s2"));
+  json servo = square_program();
   servo["machine"]["servo_period_ms"] = 0.05;
-  EXPECT_EQ(kEndpoint.pointers(servo), only("/machine/servo_period_ms"));
-  json rotary_in_mm = square();
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(servo), only("/machine/servo_period_ms"));
+  json rotary_in_mm = square_program();
   rotary_in_mm["machine"]["axes"]["c"] = {{"max_velocity_mm_per_min", 1},
                                           {"max_acceleration_mm_per_s2", 1}};
-  EXPECT_EQ(kEndpoint.pointers(rotary_in_mm),
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(rotary_in_mm),
             (std::set<std::string>{"/machine/axes/c/max_velocity_deg_per_min",
                                    "/machine/axes/c/max_acceleration_deg_per_s2",
                                    "/machine/axes/c/max_velocity_mm_per_min",
@@ -92,8 +96,8 @@ TEST(ProgramTimeEndpoint, RequestPointers) {
 }
 
 TEST(ProgramTimeEndpoint, RefusedWordNamesItsLineColumnAndWord) {
-  const api::ApiResponse response =
-      kEndpoint.answer(with(square(), "program", "G21 G90\n#1=5\nG1 X#1 F1000\nM2\n"));
+  const api::ApiResponse response = kProgramTimeEndpoint.answer(
+      with(square_program(), "program", "G21 G90\n#1=5\nG1 X#1 F1000\nM2\n"));
   ASSERT_EQ(response.status, 422) << response.body;
   const json error = parsed(response)["errors"][0];
   EXPECT_EQ(error["pointer"], "/program");
@@ -106,16 +110,16 @@ TEST(ProgramTimeEndpoint, RefusedWordNamesItsLineColumnAndWord) {
 }
 
 TEST(ProgramTimeEndpoint, CutterCompensationIsRefused) {
-  const api::ApiResponse response =
-      kEndpoint.answer(with(square(), "program", "G21 G90\nG41 D1\nG1 X10 F100\nM2\n"));
+  const api::ApiResponse response = kProgramTimeEndpoint.answer(
+      with(square_program(), "program", "G21 G90\nG41 D1\nG1 X10 F100\nM2\n"));
   ASSERT_EQ(response.status, 422) << response.body;
   EXPECT_EQ(parsed(response)["errors"][0]["code"], "gcode_cutter_compensation");
   EXPECT_EQ(parsed(response)["errors"][0]["line"], 2);
 }
 
 TEST(ProgramTimeEndpoint, AxisTheMachineDoesNotDescribeIsNamed) {
-  json request = with(square(), "program", "G21 G90\nF1000\nG1 X10\nG1 C90\nM2\n");
-  const api::ApiResponse response = kEndpoint.answer(request);
+  json request = with(square_program(), "program", "G21 G90\nF1000\nG1 X10\nG1 C90\nM2\n");
+  const api::ApiResponse response = kProgramTimeEndpoint.answer(request);
   ASSERT_EQ(response.status, 422) << response.body;
   const json error = parsed(response)["errors"][0];
   EXPECT_EQ(error["pointer"], "/machine/axes");
@@ -125,10 +129,10 @@ TEST(ProgramTimeEndpoint, AxisTheMachineDoesNotDescribeIsNamed) {
 }
 
 TEST(ProgramTimeEndpoint, MachineWithoutAxesIsRefused) {
-  json request = square();
+  json request = square_program();
   request["machine"].erase("axes");
   request["machine"]["kind"] = "lathe";
-  EXPECT_EQ(kEndpoint.pointers(request), only("/machine/axes"));
+  EXPECT_EQ(kProgramTimeEndpoint.pointers(request), only("/machine/axes"));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "api/polygon/polygon_hole_endpoint.h"
 #include "support/project_contract.h"
 #include "support/reference_compare.h"
+#include "support/route_paths.h"
 #include "support/sanity_checks.h"
 #include "support/test_server.h"
 
@@ -19,8 +20,6 @@ namespace cutcalc::testing {
 namespace {
 
 using nlohmann::json;
-
-const char* kPath = "/v1/polygon-hole/gcode";
 
 // The paper's square a = 16 (square_a16_g95), one layer.
 json square(int faces = 4, double d = 16.0) {
@@ -38,8 +37,8 @@ json with_geometry(json request, const json& flag = true) {
 
 std::string plain_program(const json& request) {
   auto client = TestServer::shared().client();
-  const auto reply =
-      client->Post(kPath, {{"Accept", "text/plain"}}, request.dump(), "application/json");
+  const auto reply = client->Post(kPolygonGcodePath, {{"Accept", "text/plain"}}, request.dump(),
+                                  "application/json");
   EXPECT_TRUE(reply);
   if (!reply) {
     return {};
@@ -64,11 +63,11 @@ TEST(PolygonGeometryApi, GeometryComesOnlyWhenAskedAndChangesNothingElse) {
     if (c_axis) {
       request["synchronization"] = "c_axis";
     }
-    const JsonReply plain = post_ok(kPath, request);
+    const JsonReply plain = post_ok(kPolygonGcodePath, request);
     EXPECT_FALSE(plain.json.contains("geometry"));
-    const JsonReply off = post_ok(kPath, with_geometry(request, false));
+    const JsonReply off = post_ok(kPolygonGcodePath, with_geometry(request, false));
     EXPECT_EQ(off.body, plain.body);  // false is the default, byte for byte
-    JsonReply on = post_ok(kPath, with_geometry(request));
+    JsonReply on = post_ok(kPolygonGcodePath, with_geometry(request));
     ASSERT_TRUE(on.json.contains("geometry"));
     on.json.erase("geometry");
     EXPECT_EQ(on.json, plain.json);
@@ -84,7 +83,7 @@ TEST(PolygonGeometryApi, PlainTextProgramIsUnchanged) {
 }
 
 TEST(PolygonGeometryApi, GeometryOfThePaperSquare) {
-  const JsonReply reply = post_ok(kPath, with_geometry(square()));
+  const JsonReply reply = post_ok(kPolygonGcodePath, with_geometry(square()));
   const json& g = reply.json.at("geometry");
   // P1: a = 16, R_c = 8 sqrt 2; V_0 at the bottom right.
   ASSERT_EQ(g.at("polygon").size(), 4u);
@@ -118,7 +117,7 @@ TEST(PolygonGeometryApi, GeometryOfThePaperSquare) {
 TEST(PolygonGeometryApi, EveryFaceCountAnswersWithinTheContractAndBounds) {
   for (int faces = 3; faces <= 12; ++faces) {
     SCOPED_TRACE(::testing::Message() << faces << " faces");
-    const JsonReply reply = post_ok(kPath, with_geometry(square(faces, 20.0)));
+    const JsonReply reply = post_ok(kPolygonGcodePath, with_geometry(square(faces, 20.0)));
     const json& g = reply.json.at("geometry");
     EXPECT_EQ(g.at("polygon").size(), static_cast<std::size_t>(faces));
     EXPECT_GE(g.at("rotor_positions").size(), 3u);
@@ -129,7 +128,8 @@ TEST(PolygonGeometryApi, EveryFaceCountAnswersWithinTheContractAndBounds) {
     for (const double d : {1.0, 1e6}) {
       json request = with_geometry(square(faces, d));
       request["tolerance_mm"] = 0.1;
-      EXPECT_EQ(expect_sane_answer(kPath, &api::polygon::handle_polygon_hole, request), 200)
+      EXPECT_EQ(expect_sane_answer(kPolygonGcodePath, &api::polygon::handle_polygon_hole, request),
+                200)
           << faces << " faces, d " << d;
     }
   }
@@ -138,26 +138,26 @@ TEST(PolygonGeometryApi, EveryFaceCountAnswersWithinTheContractAndBounds) {
 TEST(PolygonGeometryApi, WrongTypeNamesTheField) {
   for (const json& bad : {json(1), json(0), json("true"), json(nullptr), json::array()}) {
     SCOPED_TRACE(bad.dump());
-    const JsonReply reply = post(kPath, with_geometry(square(), bad).dump());
+    const JsonReply reply = post(kPolygonGcodePath, with_geometry(square(), bad).dump());
     EXPECT_EQ(reply.status, 422) << reply.body;
     EXPECT_TRUE(problem_names_pointer(reply.json, "/include_geometry")) << reply.body;
-    EXPECT_EQ(
-        expect_sane_answer(kPath, &api::polygon::handle_polygon_hole, with_geometry(square(), bad)),
-        422);
-    const auto v =
-        test_support::project_contract().check_request("POST", kPath, with_geometry(square(), bad));
+    EXPECT_EQ(expect_sane_answer(kPolygonGcodePath, &api::polygon::handle_polygon_hole,
+                                 with_geometry(square(), bad)),
+              422);
+    const auto v = test_support::project_contract().check_request("POST", kPolygonGcodePath,
+                                                                  with_geometry(square(), bad));
     EXPECT_TRUE(std::any_of(v.begin(), v.end(), [](const std::string& violation) {
       return violation.rfind("at \"/include_geometry\"", 0) == 0;
     }));
   }
   EXPECT_TRUE(test_support::project_contract()
-                  .check_request("POST", kPath, with_geometry(square()))
+                  .check_request("POST", kPolygonGcodePath, with_geometry(square()))
                   .empty());
   // Model errors are unchanged by the flag: a program of more than 200 000 arc blocks.
   json too_large = with_geometry(square());
   too_large["depth_mm"] = 1000;
   too_large["step_down_mm"] = 0.001;
-  const JsonReply reply = post(kPath, too_large.dump());
+  const JsonReply reply = post(kPolygonGcodePath, too_large.dump());
   EXPECT_EQ(reply.status, 422);
   EXPECT_TRUE(problem_names_pointer(reply.json, "/step_down_mm")) << reply.body;
 }

@@ -11,15 +11,14 @@
 #include "support/project_contract.h"
 #include "support/reference_cases.h"
 #include "support/reference_compare.h"
+#include "support/route_paths.h"
 
 namespace cutcalc::testing {
 namespace {
 
 using nlohmann::json;
 
-constexpr const char* kPath = "/v1/polygon-hole/gcode";
-
-std::vector<json> ok_requests() {
+std::vector<json> polygon_ok_requests() {
   std::vector<json> requests;
   for (const ReferenceCase& c : load_cases("polygon-hole.json")) {
     if (c.data.at("expect").at("status") == 200) requests.push_back(c.data.at("request"));
@@ -28,13 +27,13 @@ std::vector<json> ok_requests() {
 }
 
 JsonReply post_checked(const json& request) {
-  const JsonReply reply = post(kPath, request.dump());
-  expect_conforms(kPath, reply);
+  const JsonReply reply = post(kPolygonGcodePath, request.dump());
+  expect_conforms(kPolygonGcodePath, reply);
   return reply;
 }
 
 TEST(PolygonProgram, WithoutAProgramObjectTheAnswerNamesTodaysProgram) {
-  for (const json& request : ok_requests()) {
+  for (const json& request : polygon_ok_requests()) {
     if (request.contains("program")) {
       continue;  // a next/ case asks for a dialect
     }
@@ -51,7 +50,7 @@ TEST(PolygonProgram, WithoutAProgramObjectTheAnswerNamesTodaysProgram) {
 
 TEST(PolygonProgram, EveryReferenceHoleInEveryDialectAndUnitKeepsTheTextRules) {
   int checked = 0;
-  for (const json& base : ok_requests()) {
+  for (const json& base : polygon_ok_requests()) {
     for (const char* dialect : {"linuxcnc", "fanuc", "sinumerik"}) {
       for (const char* units : {"mm", "inch"}) {
         json request = base;
@@ -83,7 +82,7 @@ TEST(PolygonProgram, EveryReferenceHoleInEveryDialectAndUnitKeepsTheTextRules) {
 }
 
 TEST(PolygonProgram, PrintedDeviationAtFourDecimalsInMmIsTheFittedOneWithinRounding) {
-  for (const json& base : ok_requests()) {
+  for (const json& base : polygon_ok_requests()) {
     json request = base;
     request["program"] = {{"decimals", 4}};
     const JsonReply reply = post_checked(request);
@@ -98,7 +97,7 @@ TEST(PolygonProgram, PrintedDeviationAtFourDecimalsInMmIsTheFittedOneWithinRound
 
 TEST(PolygonProgram, InchProgramSaysItsCommentNumbersAreInMm) {
   for (const char* dialect : {"linuxcnc", "fanuc", "sinumerik"}) {
-    json request = ok_requests().front();
+    json request = polygon_ok_requests().front();
     request["program"] = {{"dialect", dialect}, {"units", "inch"}};
     const JsonReply reply = post_checked(request);
     ASSERT_EQ(reply.status, 200) << reply.body;
@@ -115,7 +114,7 @@ TEST(PolygonProgram, InchProgramSaysItsCommentNumbersAreInMm) {
 }
 
 TEST(PolygonProgram, RoundingBeyondTheToleranceWarnsInTheSpecsOrderAndAsCommentLines) {
-  json request = ok_requests().front();
+  json request = polygon_ok_requests().front();
   request["spindle_speed_rpm"] = 30.5;
   request["synchronization"] = "feed_per_rev";
   request["machine"] = {{"max_spindle_rpm", 10}, {"max_feed_mm_per_min", 1}};
@@ -144,36 +143,36 @@ TEST(PolygonProgram, RoundingBeyondTheToleranceWarnsInTheSpecsOrderAndAsCommentL
   }
   // The plain-text answer is the same program (its warnings are in it already).
   auto client = TestServer::shared().client();
-  const auto text =
-      client->Post(kPath, {{"Accept", "text/plain"}}, request.dump(), "application/json");
+  const auto text = client->Post(kPolygonGcodePath, {{"Accept", "text/plain"}}, request.dump(),
+                                 "application/json");
   ASSERT_TRUE(text);
   EXPECT_EQ(text->body, program);
   EXPECT_EQ(text->get_header_value("Content-Disposition"), "attachment; filename=\"O0001.nc\"");
 }
 
-void expect_problem_at(const json& request, const std::string& pointer) {
+void expect_polygon_problem_at(const json& request, const std::string& pointer) {
   const JsonReply reply = post_checked(request);
   EXPECT_EQ(reply.status, 422) << reply.body;
   EXPECT_TRUE(problem_names_pointer(reply.json, pointer)) << pointer << ": " << reply.body;
 }
 
 TEST(PolygonProgram, RefusesThePassProgramsMembersAndTwoSafeHeights) {
-  const json base = ok_requests().front();
+  const json base = polygon_ok_requests().front();
   for (const char* member : {"clearance_mm", "plunge_feed_mm_per_min", "rapid_mm_per_min"}) {
     json request = base;
     request["program"] = {{member, 1}};
-    expect_problem_at(request, std::string("/program/") + member);
+    expect_polygon_problem_at(request, std::string("/program/") + member);
   }
   json both = base;
   both["safe_z_mm"] = 5;
   both["program"] = {{"safe_z_mm", 6}};
-  expect_problem_at(both, "/program/safe_z_mm");
+  expect_polygon_problem_at(both, "/program/safe_z_mm");
   json machine = base;
   machine["machine"] = {{"max_spindle_rpm", 0}};
-  expect_problem_at(machine, "/machine/max_spindle_rpm");
+  expect_polygon_problem_at(machine, "/machine/max_spindle_rpm");
   json dialect = base;
   dialect["program"] = {{"dialect", "heidenhain"}};
-  expect_problem_at(dialect, "/program/dialect");
+  expect_polygon_problem_at(dialect, "/program/dialect");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "support/project_contract.h"
+#include "support/route_paths.h"
 #include "support/test_server.h"
 
 namespace cutcalc::testing {
@@ -14,9 +15,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr const char* kPath = "/v1/polygon-hole/gcode";
-
-json square() {
+json square_hole() {
   return {{"faces", 4},
           {"inscribed_diameter_mm", 16.0},
           {"depth_mm", 0.2},
@@ -24,17 +23,17 @@ json square() {
           {"spindle_speed_rpm", 30}};
 }
 
-JsonReply post_checked(const json& request) {
-  const JsonReply reply = post(kPath, request.dump());
-  expect_conforms(kPath, reply);
+JsonReply post_and_check(const json& request) {
+  const JsonReply reply = post(kPolygonGcodePath, request.dump());
+  expect_conforms(kPolygonGcodePath, reply);
   return reply;
 }
 
 TEST(PolygonRotorAndTime, EveryAnswerHasTheRotorTheCornerRadiusAndTheTimes) {
   for (int faces = 3; faces <= 12; ++faces) {
-    json request = square();
+    json request = square_hole();
     request["faces"] = faces;
-    const JsonReply reply = post_checked(request);
+    const JsonReply reply = post_and_check(request);
     ASSERT_EQ(reply.status, 200) << reply.body;
     const json& rotor = reply.json.at("rotor");
     EXPECT_EQ(rotor.at("corners"), faces - 1);
@@ -50,10 +49,10 @@ TEST(PolygonRotorAndTime, EveryAnswerHasTheRotorTheCornerRadiusAndTheTimes) {
 }
 
 TEST(PolygonRotorAndTime, RapidRateChangesOnlyTheRapidTime) {
-  const JsonReply standard = post_checked(square());
-  json faster = square();
+  const JsonReply standard = post_and_check(square_hole());
+  json faster = square_hole();
   faster["rapid_mm_per_min"] = 20000;
-  const JsonReply reply = post_checked(faster);
+  const JsonReply reply = post_and_check(faster);
   ASSERT_EQ(reply.status, 200) << reply.body;
   EXPECT_NEAR(reply.json.at("rapid_time_min").get<double>(),
               0.5 * standard.json.at("rapid_time_min").get<double>(), 1e-15);
@@ -68,16 +67,16 @@ TEST(PolygonRotorAndTime, RapidRateChangesOnlyTheRapidTime) {
 
 TEST(PolygonRotorAndTime, RapidRateIsTopLevelAndPositive) {
   for (const json& bad : {json(0), json(-1), json("fast"), json(nullptr)}) {
-    json request = square();
+    json request = square_hole();
     request["rapid_mm_per_min"] = bad;
-    const JsonReply reply = post_checked(request);
+    const JsonReply reply = post_and_check(request);
     EXPECT_EQ(reply.status, 422) << bad.dump();
     ASSERT_TRUE(reply.json.contains("errors")) << reply.body;
     EXPECT_EQ(reply.json.at("errors").at(0).at("pointer"), "/rapid_mm_per_min") << reply.body;
   }
-  json in_program = square();
+  json in_program = square_hole();
   in_program["program"] = {{"rapid_mm_per_min", 20000}};
-  const JsonReply reply = post_checked(in_program);
+  const JsonReply reply = post_and_check(in_program);
   EXPECT_EQ(reply.status, 422);
   EXPECT_EQ(reply.json.at("errors").at(0).at("pointer"), "/program/rapid_mm_per_min") << reply.body;
 }

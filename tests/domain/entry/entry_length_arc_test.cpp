@@ -22,8 +22,8 @@ using cutcalc::test::entry_only;
 using cutcalc::test::outcome;
 using cutcalc::test::straight_contour;
 
-constexpr double kTol = 1e-9;
-constexpr double kSpec2 = 5e-3;
+using cutcalc::test::kSpec2;
+using cutcalc::test::kTol;
 
 double root(double p, double q) { return std::sqrt((p - q) * (p + q)); }
 

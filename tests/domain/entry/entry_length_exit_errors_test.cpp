@@ -21,7 +21,7 @@ using cutcalc::test::outcome;
 using cutcalc::test::straight_contour;
 using cutcalc::test::wall_contour;
 
-constexpr double kTol = 1e-9;
+using cutcalc::test::kTol;
 
 template <class R>
 void expect_error(const R& res, ErrorCode code, const char* what) {

@@ -33,7 +33,7 @@ using cutcalc::test::outcome;
 // one double rounding is ~1e-13 mm; the closed forms and E10-E12 reach the same value by different
 // but well-conditioned operations (random cases never sit within 1e-12 of a tangency, where the
 // square roots would amplify rounding), so 1e-9 mm leaves three orders of margin.
-constexpr double kTol = 1e-9;
+using cutcalc::test::kTol;
 // |steady travel| below this is too close to the E23 boundary to say which side the service falls.
 constexpr double kStrokeBoundary = 1e-9;
 
@@ -211,7 +211,7 @@ Shape random_exit(double part_width, Random& rng) {
   return s;
 }
 
-struct Case {
+struct RandomCase {
   Shape entry;
   Shape exit;
   double D = 0.0;
@@ -222,8 +222,8 @@ struct Case {
   double overrun = 2.0;
 };
 
-Case random_case(Kind entry_kind, bool wall_exit, Random& rng) {
-  Case c;
+RandomCase random_case(Kind entry_kind, bool wall_exit, Random& rng) {
+  RandomCase c;
   if (entry_kind == Kind::wall) {
     // Wall family: any entry kind, exit = wall.
     static constexpr std::array<Kind, 5> kinds{Kind::straight90, Kind::inclined, Kind::convex_full,
@@ -249,7 +249,7 @@ Case random_case(Kind entry_kind, bool wall_exit, Random& rng) {
   return c;
 }
 
-std::string describe(const Case& c) {
+std::string describe(const RandomCase& c) {
   std::ostringstream out;
   out.precision(17);
   out << "entry=" << describe(c.entry) << " exit=" << describe(c.exit) << " D=" << c.D
@@ -268,14 +268,14 @@ struct Tally {
   double max_diff = 0.0;  // largest |service - closed form| over every compared value
 };
 
-void report_mismatch(Tally& tally, const Case& c, const std::string& what) {
+void report_mismatch(Tally& tally, const RandomCase& c, const std::string& what) {
   ++tally.mismatches;
   if (tally.mismatches <= 15) {
     ADD_FAILURE() << what << "\n  case: " << describe(c);
   }
 }
 
-void check_value(Tally& tally, const Case& c, const char* field, double got, double expected,
+void check_value(Tally& tally, const RandomCase& c, const char* field, double got, double expected,
                  bool& case_failed) {
   tally.max_diff = std::max(tally.max_diff, std::abs(got - expected));
   if (!(std::abs(got - expected) <= kTol)) {
@@ -293,7 +293,7 @@ void check_value(Tally& tally, const Case& c, const char* field, double got, dou
 }
 
 // Runs one case through the service and the oracle and records the outcome.
-void check_case(const Case& c, Tally& tally) {
+void check_case(const RandomCase& c, Tally& tally) {
   ++tally.total;
   const EntryLengthParams params = cutcalc::test::entry_exit(
       c.D, c.K, to_contour(c.entry), to_contour(c.exit), c.length, c.approach, c.extra, c.overrun);
@@ -376,7 +376,7 @@ TEST(EntryLengthProperty, StraightPerpendicularMatchesE13) {
   Tally tally;
   std::array<int, 4> compared_by_case{};
   for (int i = 0; i < kCasesPerFamily; ++i) {
-    const Case c = random_case(Kind::straight90, false, rng);
+    const RandomCase c = random_case(Kind::straight90, false, rng);
     const int before = tally.compared;
     check_case(c, tally);
     if (tally.compared > before) {
@@ -399,7 +399,7 @@ TEST(EntryLengthProperty, StraightInclinedMatchesE14E16) {
   Tally tally;
   int band_inside = 0;
   for (int i = 0; i < kCasesPerFamily; ++i) {
-    const Case c = random_case(Kind::inclined, false, rng);
+    const RandomCase c = random_case(Kind::inclined, false, rng);
     const int before = tally.compared;
     check_case(c, tally);
     if (tally.compared > before && std::abs(c.K) + c.D / 2.0 <= c.entry.width / 2.0) {
@@ -417,7 +417,7 @@ TEST(EntryLengthProperty, ConvexArcFullWidthMatchesE18E19) {
   Tally tally;
   std::array<int, 4> compared_by_case{};
   for (int i = 0; i < kCasesPerFamily; ++i) {
-    const Case c = random_case(Kind::convex_full, false, rng);
+    const RandomCase c = random_case(Kind::convex_full, false, rng);
     const int before = tally.compared;
     check_case(c, tally);
     if (tally.compared > before) {
@@ -450,7 +450,7 @@ TEST(EntryLengthProperty, ConcaveArcMatchesE20E21) {
   Tally tally;
   int interior_max = 0;
   for (int i = 0; i < kCasesPerFamily; ++i) {
-    const Case c = random_case(Kind::concave, false, rng);
+    const RandomCase c = random_case(Kind::concave, false, rng);
     const int before = tally.compared;
     check_case(c, tally);
     if (tally.compared > before &&
@@ -550,7 +550,7 @@ TEST(EntryOracle, ClosedFormsMatchSampledDefinition) {
   int checked = 0;
   for (Kind kind : kinds) {
     for (int i = 0; i < 300; ++i) {
-      const Case c = random_case(kind, false, rng);
+      const RandomCase c = random_case(kind, false, rng);
       const auto entry = oracle_entry(c.entry, c.D, c.K, c.approach);
       const auto exit = oracle_exit(c.exit, c.D, c.K);
       const double r = c.D / 2.0;

@@ -22,9 +22,9 @@ using cutcalc::test::entry_only;
 using cutcalc::test::outcome;
 using cutcalc::test::straight_contour;
 
-constexpr double kTol = 1e-9;    // mm, values from closed forms
+using cutcalc::test::kTol;
 constexpr double kSpec3 = 5e-4;  // numbers the spec prints with 3 decimals
-constexpr double kSpec2 = 5e-3;  // numbers the spec prints with 2 decimals
+using cutcalc::test::kSpec2;
 
 double deg(double d) { return cutcalc::domain::deg_to_rad(d); }
 

@@ -42,7 +42,7 @@ using cutcalc::test::wall_contour;
 
 enum class Side { entry, exit };
 
-constexpr double kTol = 1e-9;
+using cutcalc::test::kTol;
 // The dense sweeps below evaluate 200001 lateral positions; a smooth minimum between two of them
 // is missed by far less than this.
 constexpr double kSweepTol = 1e-6;

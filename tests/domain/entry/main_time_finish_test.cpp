@@ -24,36 +24,16 @@ using cutcalc::domain::entry::MainTimeParams;
 using cutcalc::domain::entry::MainTimeResult;
 using cutcalc::domain::entry::PassSplit;
 using cutcalc::domain::entry::SpindleSpeed;
+using cutcalc::test::main_time_ok;
+using cutcalc::test::main_time_worked_example;
 using cutcalc::test::outcome;
 using cutcalc::test::straight_contour;
 
-constexpr double kMm = 1e-9;    // mm, rpm, mm/min from exact expressions
-constexpr double kMin = 1e-12;  // min from exact expressions
-
-// Section 14: D = 50, z = 4, n = 1000, S_z = 0.1, f = 0.5, L = 120, L_pod = L_per = 2, straight
-// alpha = 90 entry and exit, B = 80; H1 = 80, t = 45, H = 5, t0 = 2.
-MainTimeParams worked_example() {
-  MainTimeParams p;
-  p.cutter_diameter_mm = 50.0;
-  p.teeth = 4;
-  p.speed = SpindleSpeed{1000.0};
-  p.feed_per_tooth_mm = 0.1;
-  p.entry_feed = EntryFeedFactor{0.5};
-  p.length_mm = 120.0;
-  p.entry = straight_contour(80.0);
-  p.exit = straight_contour(80.0);
-  p.allowance = Allowance{80.0, 45.0, 5.0, 2.0};
-  return p;
-}
+using cutcalc::test::kMin;
+using cutcalc::test::kMm;
 
 // The finishing level of the spec's example: t_f = 0.5, S_zf = 0.05.
 Finish half_mm_finish() { return Finish{0.5, 0.05, std::nullopt}; }
-
-MainTimeResult main_time_ok(const MainTimeParams& p) {
-  const auto res = compute_main_time(p);
-  EXPECT_TRUE(res.ok()) << outcome(res);
-  return res.ok() ? res.value() : MainTimeResult{};
-}
 
 void expect_sizes(const std::vector<double>& got, const std::vector<double>& want) {
   ASSERT_EQ(got.size(), want.size());
@@ -62,7 +42,7 @@ void expect_sizes(const std::vector<double>& got, const std::vector<double>& wan
 
 // E37: N1 = ceil(80/45) = 2 widths 40, 40; N2 = ceil(5/2) = 3 depths 5/3.
 TEST(MainTimeEqualSplit, EqualWidthsAndDepthsE37) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.pass_split = PassSplit::equal;
   const MainTimeResult v = main_time_ok(p);
   expect_sizes(v.depth_passes_mm, {5.0 / 3.0, 5.0 / 3.0, 5.0 / 3.0});
@@ -74,7 +54,7 @@ TEST(MainTimeEqualSplit, EqualWidthsAndDepthsE37) {
 // E38: Y_1 = t_e = 40, axis Y_1 - r = 15, K_1 = 15 - 40 = -25 (S1); pass 2 strip [40, 80], centred
 // (K 0, h = 20 < r = 25: S2, L_vr1 = r - sqrt(r^2 - h^2) = 10); T_o = 3 (0.44 + 0.365) = 2.415.
 TEST(MainTimeEqualSplit, PlacementAndMainTimeFollowTheEqualWidthsE38) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.pass_split = PassSplit::equal;
   const MainTimeResult v = main_time_ok(p);
   ASSERT_EQ(v.lateral_passes.size(), 2U);
@@ -93,7 +73,7 @@ TEST(MainTimeEqualSplit, PlacementAndMainTimeFollowTheEqualWidthsE38) {
 
 // E37: an integer ratio gives the same passes either way.
 TEST(MainTimeEqualSplit, IntegerRatioIsTheSameAsLastSmaller) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.allowance = Allowance{80.0, 40.0, 6.0, 2.0};
   const MainTimeResult last_smaller = main_time_ok(p);
   p.pass_split = PassSplit::equal;
@@ -104,7 +84,7 @@ TEST(MainTimeEqualSplit, IntegerRatioIsTheSameAsLastSmaller) {
 
 // E39: H_r = 4.5 split by E25 with t0 = 2: 2, 2, 0.5, then t_f = 0.5.
 TEST(MainTimeFinish, RoughingDepthSplitThenFinishingDepthE39) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.finish = half_mm_finish();
   const MainTimeResult v = main_time_ok(p);
   expect_sizes(v.depth_passes_mm, {2.0, 2.0, 0.5, 0.5});
@@ -114,7 +94,7 @@ TEST(MainTimeFinish, RoughingDepthSplitThenFinishingDepthE39) {
 
 // E37 + E39: H_r = 4.5 in N2r = 3 equal levels of 1.5.
 TEST(MainTimeFinish, EqualRoughingLevelsE39) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.pass_split = PassSplit::equal;
   p.finish = half_mm_finish();
   expect_sizes(main_time_ok(p).depth_passes_mm, {1.5, 1.5, 1.5, 0.5});
@@ -122,7 +102,7 @@ TEST(MainTimeFinish, EqualRoughingLevelsE39) {
 
 // E40 without a finish speed: n_f = n, S_m2f = 1000 x 4 x 0.05 = 200, S_m1f = 0.5 x 200.
 TEST(MainTimeFinish, FinishingFeedsAtTheRoughingSpeedE40) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.finish = half_mm_finish();
   const MainTimeResult v = main_time_ok(p);
   ASSERT_TRUE(v.finish.has_value());
@@ -136,7 +116,7 @@ TEST(MainTimeFinish, FinishingFeedsAtTheRoughingSpeedE40) {
 
 // E40: n_f from its own rpm, or from v_f by E30; S_m1f from S_z1 when given.
 TEST(MainTimeFinish, FinishingSpeedFromRpmOrCuttingSpeedE40) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.finish = half_mm_finish();
   p.finish->speed = SpindleSpeed{1500.0};
   MainTimeResult v = main_time_ok(p);
@@ -157,7 +137,7 @@ TEST(MainTimeFinish, FinishingSpeedFromRpmOrCuttingSpeedE40) {
 
 // E41: T_o = N2r sum t_i + sum t_i,f = 3 x 0.7907321446 + 1.5814642893 = 3.95366 (section 15).
 TEST(MainTimeFinish, MainTimeAddsTheFinishingLevelAtItsFeedsE41) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   const MainTimeResult roughing_only = main_time_ok(p);
   p.finish = half_mm_finish();
   const MainTimeResult v = main_time_ok(p);
@@ -184,7 +164,7 @@ TEST(MainTimeFinish, MainTimeAddsTheFinishingLevelAtItsFeedsE41) {
 
 // Section 15 worked example: equal passes and the finish: T_o = 3 x 0.805 + 1.61 = 4.025.
 TEST(MainTimeFinish, EqualSplitWithFinishE37E41) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.pass_split = PassSplit::equal;
   p.finish = half_mm_finish();
   const MainTimeResult v = main_time_ok(p);
@@ -193,7 +173,7 @@ TEST(MainTimeFinish, EqualSplitWithFinishE37E41) {
 
 // E39: at least one roughing level (t_f < H); t_f = H is refused.
 TEST(MainTimeFinish, FinishAsDeepAsTheAllowanceIsRefused) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.finish = Finish{5.0, 0.05, std::nullopt};
   const auto res = compute_main_time(p);
   ASSERT_FALSE(res.ok());
@@ -202,7 +182,7 @@ TEST(MainTimeFinish, FinishAsDeepAsTheAllowanceIsRefused) {
 
 // H - t_f <= t0: one roughing level.
 TEST(MainTimeFinish, ThinRoughingAllowanceGivesOneRoughingLevel) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.allowance.depth_mm = 2.5;
   p.finish = half_mm_finish();
   expect_sizes(main_time_ok(p).depth_passes_mm, {2.0, 0.5});
@@ -210,7 +190,7 @@ TEST(MainTimeFinish, ThinRoughingAllowanceGivesOneRoughingLevel) {
 
 // Section 15 validation: S_z1 > S_zf would make the finishing entry faster than its steady cut.
 TEST(MainTimeFinish, EntryFeedPerToothAboveTheFinishingFeedIsRefused) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.entry_feed = EntryFeedPerTooth{0.06};
   p.finish = half_mm_finish();
   const auto res = compute_main_time(p);

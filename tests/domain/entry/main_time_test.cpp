@@ -24,32 +24,15 @@ using cutcalc::domain::entry::MainTimeParams;
 using cutcalc::domain::entry::MainTimeResult;
 using cutcalc::domain::entry::SpindleSpeed;
 using cutcalc::test::convex_contour;
+using cutcalc::test::main_time_ok;
+using cutcalc::test::main_time_worked_example;
 using cutcalc::test::outcome;
 using cutcalc::test::straight_contour;
 using cutcalc::test::wall_contour;
 
-constexpr double kMm = 1e-9;       // mm, rpm, mm/min from exact expressions
-constexpr double kMin = 1e-12;     // min from exact expressions
+using cutcalc::test::kMin;
+using cutcalc::test::kMm;
 constexpr double kPrinted = 1e-9;  // numbers the spec prints to 10 decimals (rounding 5e-11)
-
-// Section 14: D = 50, z = 4, n = 1000, S_z = 0.1, f = 0.5, L = 120, L1 = 0, L_pod = 2, L_per = 2,
-// straight alpha = 90 entry and exit, B = 80; H1 = 80, t = 45, H = 5, t0 = 2.
-MainTimeParams worked_example() {
-  MainTimeParams p;
-  p.cutter_diameter_mm = 50.0;
-  p.teeth = 4;
-  p.speed = SpindleSpeed{1000.0};
-  p.feed_per_tooth_mm = 0.1;
-  p.entry_feed = EntryFeedFactor{0.5};
-  p.length_mm = 120.0;
-  p.extra_path_mm = 0.0;
-  p.approach_mm = 2.0;
-  p.overrun_mm = 2.0;
-  p.entry = straight_contour(80.0);
-  p.exit = straight_contour(80.0);
-  p.allowance = Allowance{80.0, 45.0, 5.0, 2.0};
-  return p;
-}
 
 // One lateral pass (N1 = 1) on a straight part: D = 20, z = 4, n = 1000, S_z = 0.05, B = 60.
 MainTimeParams single_pass() {
@@ -64,12 +47,6 @@ MainTimeParams single_pass() {
   p.offset_mm = 0.0;
   p.allowance = Allowance{20.0, 20.0, 2.0, 2.0};
   return p;
-}
-
-MainTimeResult main_time_ok(const MainTimeParams& p) {
-  const auto res = compute_main_time(p);
-  EXPECT_TRUE(res.ok()) << outcome(res);
-  return res.ok() ? res.value() : MainTimeResult{};
 }
 
 // E34-E36 must hold for any result: per-pass times from lengths and feeds, totals = N2 x sums.
@@ -105,7 +82,7 @@ void expect_error(const MainTimeParams& p, ErrorCode code, const char* what) {
 // --------------------------------------------------
 
 TEST(MainTimeWorkedExample, Feeds) {
-  const auto v = main_time_ok(worked_example());
+  const auto v = main_time_ok(main_time_worked_example());
   EXPECT_NEAR(v.spindle_speed_rpm, 1000.0, kMm);
   EXPECT_NEAR(v.feed_per_rev_mm, 0.4, kMm);
   EXPECT_NEAR(v.feed_mm_per_min, 400.0, kMm);
@@ -113,7 +90,7 @@ TEST(MainTimeWorkedExample, Feeds) {
 }
 
 TEST(MainTimeWorkedExample, PassCountsAndWidths) {
-  const auto v = main_time_ok(worked_example());
+  const auto v = main_time_ok(main_time_worked_example());
   ASSERT_EQ(v.depth_passes_mm.size(), 3u);  // N2 = 3
   EXPECT_NEAR(v.depth_passes_mm[0], 2.0, kMm);
   EXPECT_NEAR(v.depth_passes_mm[1], 2.0, kMm);
@@ -124,7 +101,7 @@ TEST(MainTimeWorkedExample, PassCountsAndWidths) {
 }
 
 TEST(MainTimeWorkedExample, FirstLateralPass) {
-  const auto v = main_time_ok(worked_example());
+  const auto v = main_time_ok(main_time_worked_example());
   ASSERT_EQ(v.lateral_passes.size(), 2u);
   const auto& p = v.lateral_passes[0];
   EXPECT_NEAR(p.strip_width_mm, 80.0, kMm);
@@ -143,7 +120,7 @@ TEST(MainTimeWorkedExample, FirstLateralPass) {
 }
 
 TEST(MainTimeWorkedExample, SecondLateralPass) {
-  const auto v = main_time_ok(worked_example());
+  const auto v = main_time_ok(main_time_worked_example());
   ASSERT_EQ(v.lateral_passes.size(), 2u);
   const auto& p = v.lateral_passes[1];
   const double end = std::sqrt(25.0 * 25.0 - 17.5 * 17.5);
@@ -168,7 +145,7 @@ TEST(MainTimeWorkedExample, SecondLateralPass) {
 }
 
 TEST(MainTimeWorkedExample, Totals) {
-  const auto v = main_time_ok(worked_example());
+  const auto v = main_time_ok(main_time_worked_example());
   EXPECT_NEAR(v.main_time_min, 2.3721964339, kPrinted);
   EXPECT_NEAR(v.entry_time_min, 0.5421964339, kPrinted);
   EXPECT_NEAR(v.steady_time_min, 1.83, kMin);
@@ -548,9 +525,9 @@ TEST(MainTimeTimes, TotalsAreDepthPassesTimesTheLateralSum) {
 
 TEST(MainTimePasses, ZeroOffsetWithSeveralPassesIsTheSameAsNone) {
   // 0 is offset_mm's documented default: sent explicitly it changes nothing.
-  MainTimeParams with_zero = worked_example();
+  MainTimeParams with_zero = main_time_worked_example();
   with_zero.offset_mm = 0.0;
-  MainTimeParams without = worked_example();
+  MainTimeParams without = main_time_worked_example();
   without.offset_mm.reset();
   const auto a = main_time_ok(with_zero);
   const auto b = main_time_ok(without);
@@ -563,7 +540,7 @@ TEST(MainTimePasses, ZeroOffsetWithSeveralPassesIsTheSameAsNone) {
 // ------------------------------------------------------------------------------
 
 TEST(MainTimeErrors, OffsetWithSeveralPasses) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.offset_mm = 1.0;
   expect_error(p, ErrorCode::offset_with_several_passes, "offset with N1 = 2");
 }
@@ -578,14 +555,14 @@ TEST(MainTimeErrors, AllowanceWiderThanPart) {
 
 TEST(MainTimeErrors, AllowanceNotFullWidthWithSeveralPasses) {
   // N1 = ceil(50 / 30) = 2 but H1 = 50 != B = 80.
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.cutter_diameter_mm = 40.0;
   p.allowance = Allowance{50.0, 30.0, 2.0, 2.0};
   expect_error(p, ErrorCode::allowance_not_full_width, "H1 = 50, B = 80, N1 = 2");
 }
 
 TEST(MainTimeErrors, AllowanceWidthComparedWithRelativeTolerance) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.allowance.width_mm = 80.0 * (1.0 + 1e-12);
   const auto ok = compute_main_time(p);
   EXPECT_TRUE(ok.ok()) << outcome(ok);
@@ -594,7 +571,7 @@ TEST(MainTimeErrors, AllowanceWidthComparedWithRelativeTolerance) {
 }
 
 TEST(MainTimeErrors, WidthOfCutExceedsDiameter) {
-  MainTimeParams p = worked_example();
+  MainTimeParams p = main_time_worked_example();
   p.cutter_diameter_mm = 40.0;  // t = 45 > D = 40, N1 = 2
   expect_error(p, ErrorCode::width_of_cut_exceeds_diameter, "t = 45 > D = 40, N1 = 2");
   MainTimeParams q = single_pass();  // checked whatever N1

@@ -11,7 +11,7 @@
 namespace cutcalc::domain::grooving {
 namespace {
 
-constexpr auto paper = settings::paper_setting;
+using settings::paper_setting;
 
 using program::WarningCode;
 
@@ -32,7 +32,7 @@ std::vector<WarningCode> warning_codes(const GroovingCycleParams& p) {
 }
 
 TEST(GroovingCycleErrors, BottomAtOrAboveTheStartIsRefused) {
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.groove_depth_mm.reset();
   for (const double bottom : {220.0, 230.0}) {
     p.bottom_diameter_mm = bottom;
@@ -44,7 +44,7 @@ TEST(GroovingCycleErrors, BottomAtOrAboveTheStartIsRefused) {
 
 TEST(GroovingCycleErrors, DepthReachingTheAxisIsRefused) {
   // 2h >= D0.
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.feed_per_rev_mm = 1.0;
   for (const double depth : {110.0, 120.0}) {
     p.groove_depth_mm = depth;
@@ -55,7 +55,7 @@ TEST(GroovingCycleErrors, DepthReachingTheAxisIsRefused) {
 }
 
 TEST(GroovingCycleErrors, ShiftOrToolAsWideAsTheGrooveIsRefused) {
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.shift_mm = 10.4;
   EXPECT_EQ(refusal(p), ErrorCode::shift_too_wide);
   p.shift_mm.reset();
@@ -67,7 +67,7 @@ TEST(GroovingCycleErrors, ShiftOrToolAsWideAsTheGrooveIsRefused) {
 
 TEST(GroovingCycleErrors, ToolAndShiftThatDoNotAddUpAreRefused) {
   // K3 mismatch, and K4 B <= X2.
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.tool_width_mm = 10.1;
   EXPECT_EQ(refusal(p), ErrorCode::tool_and_shift_mismatch);
   p.tool_width_mm = 5.2;
@@ -77,7 +77,7 @@ TEST(GroovingCycleErrors, ToolAndShiftThatDoNotAddUpAreRefused) {
 
 TEST(GroovingCycleErrors, TwentyThousandRevolutionsAreTheCap) {
   // 5.1: N = 20000 accepted, 20001 refused with the limit stated.
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.start_diameter_mm = 1000.0;
   p.feed_per_rev_mm = 0.01;
   p.groove_depth_mm = 200.0;
@@ -94,7 +94,7 @@ TEST(GroovingCycleErrors, TwentyThousandRevolutionsAreTheCap) {
 
 TEST(GroovingCycleWarnings, ShiftOutsideThePapersRangeWarnsBeyondItsEndsOnly) {
   // K5: X2 < 0.3 or X2 > 0.5.
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   for (const double inside : {0.3, 0.4, 0.5}) {
     p.shift_mm = inside;
     EXPECT_TRUE(warning_codes(p).empty()) << inside;
@@ -111,7 +111,7 @@ TEST(GroovingCycleWarnings, ShiftOutsideThePapersRangeWarnsBeyondItsEndsOnly) {
 
 TEST(GroovingCycleWarnings, FewerThanFiveRevolutionsWarnThePatternIsNotRepeated) {
   // K23: N < 5.
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.groove_depth_mm = 0.48;  // N = 4
   EXPECT_EQ(warning_codes(p), std::vector{WarningCode::pattern_not_repeated});
   p.groove_depth_mm = 0.6;  // N = 5
@@ -120,7 +120,7 @@ TEST(GroovingCycleWarnings, FewerThanFiveRevolutionsWarnThePatternIsNotRepeated)
 
 TEST(GroovingCycleWarnings, ConstantSurfaceSpeedWarnsWhenTheBottomNeedsMoreThanTheLimit) {
   // K23: G96 and 1000 v/(pi Db) > n_max; at Db 210.4 that is 130.108 rpm.
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.spindle.max_spindle_rpm = 130.0;
   EXPECT_EQ(warning_codes(p), std::vector{WarningCode::spindle_speed_limited});
   p.spindle.max_spindle_rpm = 130.2;
@@ -129,7 +129,7 @@ TEST(GroovingCycleWarnings, ConstantSurfaceSpeedWarnsWhenTheBottomNeedsMoreThanT
 
 TEST(GroovingCycleWarnings, ConstantSpeedOverTheGivenLimitWarns) {
   // K23: G97 and n > max_spindle_rpm (given); equal is fine, absent never warns.
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.spindle = {1000.0, std::nullopt, 800.0};
   EXPECT_EQ(warning_codes(p), std::vector{WarningCode::spindle_over_limit});
   p.spindle.max_spindle_rpm = 1000.0;
@@ -141,7 +141,7 @@ TEST(GroovingCycleWarnings, ConstantSpeedOverTheGivenLimitWarns) {
 TEST(GroovingCycleWarnings, WarningsComeInTheOrderOfSection37) {
   // spindle_over_limit / spindle_speed_limited, then shift_outside_paper_range, then
   // pattern_not_repeated.
-  GroovingCycleParams p = paper();
+  GroovingCycleParams p = paper_setting();
   p.shift_mm = 0.6;
   p.groove_depth_mm = 0.24;  // N = 2
   p.spindle = {1000.0, std::nullopt, 800.0};

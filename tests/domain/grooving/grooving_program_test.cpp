@@ -13,7 +13,7 @@
 namespace cutcalc::domain::grooving {
 namespace {
 
-constexpr auto small = settings::small_groove;
+using settings::small_groove;
 
 using program::Coolant;
 using program::Dialect;
@@ -68,7 +68,7 @@ TEST(GroovingProgram, BlocksFollowSection51AndFeedsPrintOnlyOnChange) {
   // spindle, coolant, air cut, 5 pattern blocks, dwell 60/500 s, final shift, retract, M5, M9.
   ProgramOptions options;
   options.coolant = Coolant::flood;
-  const GroovingProgram out = program_of(small(5), options);
+  const GroovingProgram out = program_of(small_groove(5), options);
   EXPECT_EQ(out.program,
             "%\n"
             "(CUTCALC)\n"
@@ -97,7 +97,7 @@ TEST(GroovingProgram, BlocksFollowSection51AndFeedsPrintOnlyOnChange) {
 
 TEST(GroovingProgram, FinalShiftPrintsItsFeedAfterAShiftBlockAndGoesToTheOtherSide) {
   // N = 4: the last pattern block is a shift back to z_L at f_sh; the final shift goes to z_R at s.
-  const std::vector<std::string> lines = lines_of(program_of(small(4), {}).program);
+  const std::vector<std::string> lines = lines_of(program_of(small_groove(4), {}).program);
   ASSERT_GE(lines.size(), 7U);
   const std::size_t end = lines.size();
   EXPECT_EQ(lines[end - 7], "G1 X49.2000 Z-10.0000 F0.4123");
@@ -105,13 +105,13 @@ TEST(GroovingProgram, FinalShiftPrintsItsFeedAfterAShiftBlockAndGoesToTheOtherSi
   EXPECT_EQ(lines[end - 5], "G1 Z-9.6000 F0.1000");
   EXPECT_EQ(lines[end - 4], "G0 X52.0000");
   // N = 6 ends right: the final shift goes back to z_L.
-  const std::vector<std::string> six = lines_of(program_of(small(6), {}).program);
+  const std::vector<std::string> six = lines_of(program_of(small_groove(6), {}).program);
   ASSERT_GE(six.size(), 5U);
   EXPECT_EQ(six[six.size() - 5], "G1 Z-10.0000 F0.1000");
 }
 
 TEST(GroovingProgram, NoDwellBlockWithoutDwellRevolutions) {
-  GroovingCycleParams p = small(5);
+  GroovingCycleParams p = small_groove(5);
   p.dwell_revolutions = 0.0;
   const std::string text = program_of(p, {}).program;
   EXPECT_EQ(text.find("\nG4 "), std::string::npos) << text;
@@ -125,7 +125,7 @@ TEST(GroovingProgram, FanucHeaderSpindleClampAndDwellAsSection52) {
   options.name = "GROOVE";
   options.tool_number = 7;
   options.coolant = Coolant::mist;
-  const GroovingProgram out = program_of(with_css(small(5), 86.0, 1000.0), options);
+  const GroovingProgram out = program_of(with_css(small_groove(5), 86.0, 1000.0), options);
   EXPECT_EQ(first_lines(out.program, 12),
             (std::vector<std::string>{"%", "O0012 (GROOVE)", "(CUTCALC GROOVING CYCLE V RAZVOD)",
                                       "G21", "G18 G40 G99", "G54", "T0707", "G00 X52.000 Z-10.000",
@@ -144,7 +144,7 @@ TEST(GroovingProgram, SinumerikInchHeaderAndSurfaceSpeedInFeetPerMinute) {
   options.name = "GROOVE_1";
   options.tool_number = 3;
   options.work_offset = 55;
-  const GroovingProgram out = program_of(with_css(small(5), 86.0, 1000.0), options);
+  const GroovingProgram out = program_of(with_css(small_groove(5), 86.0, 1000.0), options);
   // 52/25.4 = 2.04724, -10/25.4 = -0.39370, 86/0.3048 = 282.15223 ft/min; 0.1/25.4 = 0.003937.
   EXPECT_EQ(first_lines(out.program, 9),
             (std::vector<std::string>{"; GROOVE_1", "; CUTCALC GROOVING CYCLE V RAZVOD",
@@ -160,7 +160,7 @@ TEST(GroovingProgram, LinuxcncInchHeaderAndConstantSpeedLine) {
   ProgramOptions options;
   options.units = Units::inch;
   options.tool_number = 12;
-  const GroovingProgram out = program_of(small(5), options);
+  const GroovingProgram out = program_of(small_groove(5), options);
   EXPECT_EQ(first_lines(out.program, 8),
             (std::vector<std::string>{"%", "(CUTCALC)", "(CUTCALC GROOVING CYCLE V RAZVOD)",
                                       "G20 G18 G7 G90 G40 G49 G80 G95", "G54", "T12 M6 G43",
@@ -169,7 +169,7 @@ TEST(GroovingProgram, LinuxcncInchHeaderAndConstantSpeedLine) {
 
 TEST(GroovingProgram, WarningsBecomeCommentLinesUpperCaseOnFanuc) {
   // X2 0.6 (outside 0.3-0.5) and N = 2 (< 5): two warnings, one comment line each, after the title.
-  GroovingCycleParams p = small(2);
+  GroovingCycleParams p = small_groove(2);
   p.shift_mm = 0.6;
   const GroovingProgram linuxcnc = program_of(p, {});
   EXPECT_EQ(codes(linuxcnc), (std::vector{WarningCode::shift_outside_paper_range,
@@ -193,18 +193,18 @@ TEST(GroovingProgram, FanucAloneWarnsThatItsSpindleWordsWereRounded) {
   ProgramOptions fanuc;
   fanuc.dialect = Dialect::fanuc;
   // Integral v, n_max and n: no warning.
-  EXPECT_TRUE(program_of(with_css(small(5), 86.0, 1000.0), fanuc).warnings.empty());
-  EXPECT_TRUE(program_of(small(5), fanuc).warnings.empty());
+  EXPECT_TRUE(program_of(with_css(small_groove(5), 86.0, 1000.0), fanuc).warnings.empty());
+  EXPECT_TRUE(program_of(small_groove(5), fanuc).warnings.empty());
   // v 86.4 -> S86; n_max 1000.5 -> G50 S1000; n 500.5 -> S501 (half up).
   for (const GroovingCycleParams& p :
-       {with_css(small(5), 86.4, 1000.0), with_css(small(5), 86.0, 1000.5)}) {
+       {with_css(small_groove(5), 86.4, 1000.0), with_css(small_groove(5), 86.0, 1000.5)}) {
     const GroovingProgram out = program_of(p, fanuc);
     EXPECT_EQ(codes(out), std::vector{WarningCode::spindle_speed_rounded});
     EXPECT_NE(out.program.find("(SPINDLE_SPEED_ROUNDED)\n"), std::string::npos);
     EXPECT_NE(out.program.find("\nG50 S1000\nG96 S86 M03\n"), std::string::npos) << out.program;
     EXPECT_TRUE(program_of(p, {}).warnings.empty());  // linuxcnc prints the decimals
   }
-  GroovingCycleParams g97 = small(5);
+  GroovingCycleParams g97 = small_groove(5);
   g97.spindle.spindle_speed_rpm = 500.5;
   const GroovingProgram rounded = program_of(g97, fanuc);
   EXPECT_EQ(codes(rounded), std::vector{WarningCode::spindle_speed_rounded});
@@ -217,7 +217,7 @@ TEST(GroovingProgram, FanucAloneWarnsThatItsSpindleWordsWereRounded) {
 
 TEST(GroovingProgram, WordsThatWouldPrintAsZeroAreRefused) {
   // F: s = 0.00004 mm/rev prints 0.0000 at 4 decimals, but not at 6.
-  GroovingCycleParams tiny_feed = small(5);
+  GroovingCycleParams tiny_feed = small_groove(5);
   tiny_feed.feed_per_rev_mm = 0.00004;
   tiny_feed.groove_depth_mm = 0.4;
   EXPECT_EQ(refusal(tiny_feed, {}), ErrorCode::word_prints_as_zero);
@@ -227,19 +227,21 @@ TEST(GroovingProgram, WordsThatWouldPrintAsZeroAreRefused) {
   // Fanuc G50 S: n_max 0.9 floors to 0; Fanuc G97 S: 0.4 rounds to 0.
   ProgramOptions fanuc;
   fanuc.dialect = Dialect::fanuc;
-  EXPECT_EQ(refusal(with_css(small(5), 86.0, 0.9), fanuc), ErrorCode::word_prints_as_zero);
-  GroovingCycleParams slow = small(5);
+  EXPECT_EQ(refusal(with_css(small_groove(5), 86.0, 0.9), fanuc), ErrorCode::word_prints_as_zero);
+  GroovingCycleParams slow = small_groove(5);
   slow.spindle.spindle_speed_rpm = 0.4;
   EXPECT_EQ(refusal(slow, fanuc), ErrorCode::word_prints_as_zero);
   EXPECT_TRUE(written(slow, {}).ok());  // "G97 S0.4000"
   // LinuxCNC G96 D and S, Sinumerik LIMS.
-  EXPECT_EQ(refusal(with_css(small(5), 86.0, 0.00001), {}), ErrorCode::word_prints_as_zero);
-  EXPECT_EQ(refusal(with_css(small(5), 0.00001, 1000.0), {}), ErrorCode::word_prints_as_zero);
+  EXPECT_EQ(refusal(with_css(small_groove(5), 86.0, 0.00001), {}), ErrorCode::word_prints_as_zero);
+  EXPECT_EQ(refusal(with_css(small_groove(5), 0.00001, 1000.0), {}),
+            ErrorCode::word_prints_as_zero);
   ProgramOptions sinumerik;
   sinumerik.dialect = Dialect::sinumerik;
-  EXPECT_EQ(refusal(with_css(small(5), 86.0, 0.0001), sinumerik), ErrorCode::word_prints_as_zero);
+  EXPECT_EQ(refusal(with_css(small_groove(5), 86.0, 0.0001), sinumerik),
+            ErrorCode::word_prints_as_zero);
   // A dwell of 1e-6 revolutions prints G4 P0.000; no dwell (n_d = 0) is no error.
-  GroovingCycleParams blink = small(5);
+  GroovingCycleParams blink = small_groove(5);
   blink.dwell_revolutions = 1e-6;
   EXPECT_EQ(refusal(blink, {}), ErrorCode::word_prints_as_zero);
   blink.dwell_revolutions = 0.0;

@@ -13,8 +13,15 @@
 
 namespace {
 
-using namespace cutcalc::test::kinematics;
-namespace detail = cutcalc::domain::kinematics::detail;
+using cutcalc::test::kinematics::computed;
+using cutcalc::test::kinematics::ContactPointSpeeds;
+using cutcalc::test::kinematics::MillingSense;
+using cutcalc::test::kinematics::on_center_distance;
+using cutcalc::test::kinematics::on_flat_depth;
+using cutcalc::test::kinematics::ResultantSpeedsParams;
+using cutcalc::test::kinematics::sample;
+using cutcalc::test::kinematics::with_angles;
+namespace kinematics_detail = cutcalc::domain::kinematics::detail;
 
 ResultantSpeedsParams with_arc_samples(ResultantSpeedsParams p, int count) {
   p.arc_samples = count;
@@ -124,7 +131,8 @@ TEST(ResultantSpeedsArcSamples, DeepCutSamplesShowTheSenseFlip) {
 TEST(ResultantSpeedsArcSamples, AnglesAreAntisymmetricWithAnExactMiddle) {
   const double rho_e = 20.281649812950175;
   for (const int count : {2, 3, 8, 9, 100, 361}) {
-    const std::vector<double> angles = detail::evenly_spaced_contact_angles(rho_e, count);
+    const std::vector<double> angles =
+        kinematics_detail::evenly_spaced_contact_angles(rho_e, count);
     ASSERT_EQ(angles.size(), static_cast<std::size_t>(count));
     EXPECT_EQ(angles.front(), rho_e);
     EXPECT_EQ(angles.back(), -rho_e);
@@ -138,8 +146,8 @@ TEST(ResultantSpeedsArcSamples, AnglesAreAntisymmetricWithAnExactMiddle) {
       EXPECT_FALSE(std::signbit(middle));
     }
   }
-  EXPECT_EQ(detail::evenly_spaced_contact_angles(rho_e, 1), std::vector<double>{0.0});
-  EXPECT_TRUE(detail::evenly_spaced_contact_angles(rho_e, 0).empty());
+  EXPECT_EQ(kinematics_detail::evenly_spaced_contact_angles(rho_e, 1), std::vector<double>{0.0});
+  EXPECT_TRUE(kinematics_detail::evenly_spaced_contact_angles(rho_e, 0).empty());
 }
 
 TEST(ResultantSpeedsArcSamples, ArcSamplesAreUsedWhenBothListsAreSet) {

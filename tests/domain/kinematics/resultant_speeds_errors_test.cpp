@@ -10,9 +10,16 @@
 
 namespace {
 
-using namespace cutcalc::test::kinematics;
 using cutcalc::domain::ErrorCode;
 using cutcalc::domain::kinematics::compute_resultant_speeds;
+using cutcalc::test::kinematics::all_finite;
+using cutcalc::test::kinematics::computed;
+using cutcalc::test::kinematics::MillingSense;
+using cutcalc::test::kinematics::on_center_distance;
+using cutcalc::test::kinematics::on_flat_depth;
+using cutcalc::test::kinematics::ResultantSpeedsParams;
+using cutcalc::test::kinematics::sample;
+using cutcalc::test::kinematics::with_angles;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 

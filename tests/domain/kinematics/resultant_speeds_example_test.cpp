@@ -10,10 +10,16 @@
 
 namespace {
 
-using namespace cutcalc::test::kinematics;
+using cutcalc::test::kinematics::computed;
+using cutcalc::test::kinematics::ContactPointSpeeds;
+using cutcalc::test::kinematics::degrees;
+using cutcalc::test::kinematics::MillingSense;
+using cutcalc::test::kinematics::radians;
+using cutcalc::test::kinematics::sample;
+using cutcalc::test::kinematics::tol;
 
 // One printed row of the section 6 table.
-struct Row {
+struct ExampleRow {
   double rho_deg;
   double contact_radius_mm;
   double sigma_deg;
@@ -23,7 +29,7 @@ struct Row {
 };
 
 // Half a unit of the last printed digit of each column.
-void expect_row(const ContactPointSpeeds& got, const Row& want) {
+void expect_row(const ContactPointSpeeds& got, const ExampleRow& want) {
   EXPECT_NEAR(got.contact_angle_deg, want.rho_deg, 5e-5);
   EXPECT_NEAR(got.contact_radius_mm, want.contact_radius_mm, 1e-12 * want.contact_radius_mm);
   EXPECT_NEAR(got.contact_polar_angle_deg, want.sigma_deg, 5e-5);
@@ -43,7 +49,7 @@ TEST(ResultantSpeedsExample, EngagementHalfAngleAndToolSpeed) {
   EXPECT_EQ(result.points[0].contact_angle_deg, result.engagement_half_angle_deg);
   EXPECT_EQ(result.points[1].contact_angle_deg, 0.0);
   EXPECT_EQ(result.points[2].contact_angle_deg, -result.engagement_half_angle_deg);
-  const double V_T = 2.0 * kPi * 10.0 * 3000.0 / 1000.0;  // V8, m/min
+  const double V_T = 2.0 * std::numbers::pi * 10.0 * 3000.0 / 1000.0;  // V8, m/min
   for (const auto& point : result.points) {
     EXPECT_NEAR(point.tool_speed_m_per_min, 188.4956, 5e-5);
     EXPECT_NEAR(point.tool_speed_m_per_min, V_T, tol(V_T, 1e-14));
@@ -94,8 +100,8 @@ TEST(ResultantSpeedsExample, KinematicRatioAndResultantAngleAreSmall) {
 // Section 4 notes: at the middle with a_w > R1, |v_e|^2 = (V_T +- v_S2)^2 + v_s1^2 (+ up, - down),
 // and v_s1 is perpendicular to v_w, so |u_s| = hypot(v_s1, v_S2).
 TEST(ResultantSpeedsExample, MiddlePointMatchesClosedForm) {
-  const double V_T = 2.0 * kPi * 10.0 * 3000.0;  // mm/min
-  const double v_S2 = 2.0 * kPi * 15.0 * 10.0;   // mm/min, R2' = a_w - R1 = 15
+  const double V_T = 2.0 * std::numbers::pi * 10.0 * 3000.0;  // mm/min
+  const double v_S2 = 2.0 * std::numbers::pi * 15.0 * 10.0;   // mm/min, R2' = a_w - R1 = 15
   const double v_s1 = 100.0;
   const auto up = computed(sample(MillingSense::up));
   const auto down = computed(sample(MillingSense::down));

@@ -9,7 +9,17 @@
 
 namespace {
 
-using namespace cutcalc::test::kinematics;
+using cutcalc::test::kinematics::all_finite;
+using cutcalc::test::kinematics::computed;
+using cutcalc::test::kinematics::degrees;
+using cutcalc::test::kinematics::MillingSense;
+using cutcalc::test::kinematics::on_center_distance;
+using cutcalc::test::kinematics::on_flat_depth;
+using cutcalc::test::kinematics::radians;
+using cutcalc::test::kinematics::ResultantSpeedsParams;
+using cutcalc::test::kinematics::sample;
+using cutcalc::test::kinematics::tol;
+using cutcalc::test::kinematics::with_angles;
 
 // Erratum E2: R1 = 10, a_w = 8, rho = 10 deg puts the contact point beyond the part axis
 // (a_w - R1 cos rho < 0); atan2 gives sigma = 136.78 deg where the paper's arcsin gives 43.22.
@@ -86,7 +96,8 @@ TEST(ResultantSpeedsGeometry, FeedSignEntersThroughTheCrossTerm) {
     ASSERT_EQ(forward.points.size(), 3u);
     ASSERT_EQ(backward.points.size(), 3u);
     // a_w > R1: up = same rotation senses (omega2 > 0), down = opposite (V6).
-    const double omega2 = (milling == MillingSense::up ? 1.0 : -1.0) * 2.0 * kPi * 10.0;
+    const double omega2 =
+        (milling == MillingSense::up ? 1.0 : -1.0) * 2.0 * std::numbers::pi * 10.0;
     for (std::size_t i = 0; i < 3; ++i) {
       const double rho = radians(forward.points[i].contact_angle_deg);
       const double difference = 4.0 * 100.0 * omega2 * 10.0 * std::sin(rho);
@@ -108,7 +119,8 @@ TEST(ResultantSpeedsGeometry, NoFeedGivesZeroAngleAtTheMiddle) {
   const auto result = computed(sample(MillingSense::down, 0.0));
   ASSERT_EQ(result.points.size(), 3u);
   EXPECT_EQ(result.points[1].resultant_angle_deg, 0.0);
-  const double ve = (2.0 * kPi * 10.0 * 3000.0 - 2.0 * kPi * 15.0 * 10.0) / 1000.0;
+  const double ve =
+      (2.0 * std::numbers::pi * 10.0 * 3000.0 - 2.0 * std::numbers::pi * 15.0 * 10.0) / 1000.0;
   EXPECT_NEAR(result.points[1].resultant_speed_m_per_min, ve, tol(ve, 1e-13));
 }
 
@@ -120,7 +132,7 @@ TEST(ResultantSpeedsGeometry, StillWorkpiece) {
     p.workpiece_speed_rpm = 0.0;
     const auto result = computed(with_angles(p, {20.0, 0.0, -20.0, 7.5}));
     ASSERT_EQ(result.points.size(), 4u);
-    const double V_T = 2.0 * kPi * 10.0 * 3000.0;  // mm/min
+    const double V_T = 2.0 * std::numbers::pi * 10.0 * 3000.0;  // mm/min
     for (const auto& point : result.points) {
       const double rho = radians(point.contact_angle_deg);
       EXPECT_EQ(point.workpiece_speed_m_per_min, 0.0);

@@ -18,7 +18,15 @@
 
 namespace {
 
-using namespace cutcalc::test::kinematics;
+using cutcalc::test::kinematics::all_finite;
+using cutcalc::test::kinematics::CenterDistance;
+using cutcalc::test::kinematics::computed;
+using cutcalc::test::kinematics::ContactPointSpeeds;
+using cutcalc::test::kinematics::degrees;
+using cutcalc::test::kinematics::FlatDepth;
+using cutcalc::test::kinematics::MillingSense;
+using cutcalc::test::kinematics::radians;
+using cutcalc::test::kinematics::ResultantSpeedsParams;
 
 constexpr double kRel = 1e-12;  // the spec's agreement bound between the two forms
 // Largest cancellation factor (sum of |terms| / |result|) under which a value is compared: with
@@ -103,8 +111,8 @@ CosineLaw cosine_law(const Draw& d, double rho_deg) {
   const double s = std::sin(rho);
   const double c = std::cos(rho);
   const double s2 = rotation_sign(p.milling, a_w, R1);
-  const double omega1 = 2.0 * kPi * p.tool_speed_rpm;
-  const double omega2 = s2 * 2.0 * kPi * p.workpiece_speed_rpm;
+  const double omega1 = 2.0 * std::numbers::pi * p.tool_speed_rpm;
+  const double omega2 = s2 * 2.0 * std::numbers::pi * p.workpiece_speed_rpm;
   const double v_s1 = p.tool_feed_mm_per_min;
 
   CosineLaw r;
@@ -116,7 +124,7 @@ CosineLaw cosine_law(const Draw& d, double rho_deg) {
   r.R2_contact = std::sqrt(R2_sq);
   r.cond_R2 = std::max(a_w, R1) / r.R2_contact;
   r.V_T = omega1 * R1;
-  r.v_S2 = 2.0 * kPi * r.R2_contact * p.workpiece_speed_rpm;
+  r.v_S2 = 2.0 * std::numbers::pi * r.R2_contact * p.workpiece_speed_rpm;
   r.g = R1 - a_w * c;
 
   const double cross_term = 2.0 * v_s1 * omega2 * R1 * s;

@@ -9,7 +9,14 @@
 
 namespace {
 
-using namespace cutcalc::test::kinematics;
+using cutcalc::test::kinematics::computed;
+using cutcalc::test::kinematics::degrees;
+using cutcalc::test::kinematics::MillingSense;
+using cutcalc::test::kinematics::on_center_distance;
+using cutcalc::test::kinematics::on_flat_depth;
+using cutcalc::test::kinematics::ResultantSpeedsParams;
+using cutcalc::test::kinematics::sample;
+using cutcalc::test::kinematics::with_angles;
 
 MillingSense opposite(MillingSense s) {
   return s == MillingSense::up ? MillingSense::down : MillingSense::up;

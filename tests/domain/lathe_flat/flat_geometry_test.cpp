@@ -10,16 +10,16 @@
 #include <cmath>
 #include <numbers>
 
+#include "domain/lathe_flat/lathe_flat_settings.h"
+
 namespace cutcalc::domain::lathe_flat {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Section 9: D32, t = 1 (d = 15).
-constexpr FlatSection kPaper{16.0, 15.0, 0.0};
-constexpr FlatSection kPaperR5{16.0, 15.0, 5.0};
+using settings::kPaper;
+using settings::kPaperR5;
 
-double degrees(double rad) { return rad * 180.0 / kPi; }
+double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 TEST(FlatGeometry, EngagementAngleAndWidthOfTheWorkedExample) {
   // F2, F3: alpha_e = arccos(d/R2) = 20.364135 deg, b = 2 sqrt(31) = 11.135529 mm.
@@ -34,7 +34,7 @@ TEST(FlatGeometry, EngagementAngleAndWidthOfTheWorkedExample) {
 
 TEST(FlatGeometry, AngleIsAccurateForAFlatThroughTheAxisAndAShallowOne) {
   // The atan2 form: 90 deg at d = 0 and small angles near d = R2 without the arccos cancellation.
-  EXPECT_NEAR(engagement_half_angle_rad({10.0, 0.0, 0.0}), kPi / 2.0, 1e-15);
+  EXPECT_NEAR(engagement_half_angle_rad({10.0, 0.0, 0.0}), std::numbers::pi / 2.0, 1e-15);
   EXPECT_NEAR(flat_width_mm({10.0, 0.0, 0.0}), 20.0, 1e-13);
   const FlatSection shallow{10.0, 10.0 - 1e-11, 0.0};
   const double t = 10.0 - shallow.axis_distance_mm;  // exact (Sterbenz)
@@ -120,8 +120,8 @@ TEST(FlatGeometry, StepTableIsSymmetricWithChordsAlongTheOffsetLineAndAZeroLastR
         EXPECT_EQ(row.dx_mm > 0.0, i < n) << i;  // down in the first half, up in the second
         EXPECT_NEAR(row.dx_mm, -rows[static_cast<std::size_t>(2 * n - 1 - i)].dx_mm, 1e-12);
         // F9: the chord between the two points of the line at d + R, from their coordinates.
-        const double a0 = row.c_deg * kPi / 180.0;
-        const double a1 = next.c_deg * kPi / 180.0;
+        const double a0 = row.c_deg * std::numbers::pi / 180.0;
+        const double a1 = next.c_deg * std::numbers::pi / 180.0;
         const double chord = std::hypot(row.x_mm * std::cos(a0) - next.x_mm * std::cos(a1),
                                         row.x_mm * std::sin(a0) - next.x_mm * std::sin(a1));
         EXPECT_NEAR(row.chord_mm, chord, 1e-11);

@@ -21,9 +21,7 @@ using program::Dialect;
 using program::ProgramOptions;
 using program::Units;
 
-constexpr double kPi = std::numbers::pi;
-
-constexpr auto paper = settings::paper_flat;
+using settings::paper_flat;
 
 Result<FlatProgram> written(const LatheFlatParams& p, const ProgramOptions& options) {
   const auto flat = compute_lathe_flat(p);
@@ -67,7 +65,7 @@ std::vector<std::string> expected_motion(const LatheFlatParams& p, int layers, d
       const double d = r2 - t * j / layers;
       const double alpha_e = std::acos(d / r2);
       const double offset = -k * 360.0 / p.flats;
-      out.push_back("G0 C" + fixed(offset + alpha_e * 180.0 / kPi, decimals));
+      out.push_back("G0 C" + fixed(offset + alpha_e * 180.0 / std::numbers::pi, decimals));
       out.push_back("G1 X" + x_word((d + r) * r2 / d) + " F" +
                     fixed(p.feed_mm_per_min / per_length_unit, decimals));
       out.push_back("G93");
@@ -76,7 +74,7 @@ std::vector<std::string> expected_motion(const LatheFlatParams& p, int layers, d
         const double to = alpha_e * (n - i) / n;
         const double chord = (d + r) * std::fabs(std::tan(from) - std::tan(to));
         out.push_back("G1 X" + x_word((d + r) / std::cos(to)) + " C" +
-                      fixed(offset + to * 180.0 / kPi, decimals) + " F" +
+                      fixed(offset + to * 180.0 / std::numbers::pi, decimals) + " F" +
                       fixed(p.feed_mm_per_min / chord, decimals));
       }
       out.push_back("G94");
@@ -101,7 +99,7 @@ std::vector<std::string> motion_of(const std::string& program) {
 }
 
 TEST(FlatProgram, LinuxcncHeaderAndEndAsSection64) {
-  const std::vector<std::string> lines = lines_of(program_of(paper()));
+  const std::vector<std::string> lines = lines_of(program_of(paper_flat()));
   ASSERT_GE(lines.size(), 7U);
   EXPECT_EQ(lines[0], "%");
   EXPECT_EQ(lines[1], "(CUTCALC)");
@@ -113,14 +111,14 @@ TEST(FlatProgram, LinuxcncHeaderAndEndAsSection64) {
   EXPECT_EQ(lines.back(), "%");
   ProgramOptions inch;
   inch.units = Units::inch;
-  EXPECT_EQ(lines_of(program_of(paper(), inch))[4], "G20 G18 G90 G40 G49 G80 G94 G7");
+  EXPECT_EQ(lines_of(program_of(paper_flat(), inch))[4], "G20 G18 G90 G40 G49 G80 G94 G7");
 }
 
 TEST(FlatProgram, SinumerikHeaderAndEndAsSection64) {
   ProgramOptions options;
   options.dialect = Dialect::sinumerik;
   options.name = "FLAT_1";
-  const auto out = written(paper(), options);
+  const auto out = written(paper_flat(), options);
   ASSERT_TRUE(out.ok());
   const std::vector<std::string> lines = lines_of(out.value().program);
   ASSERT_GE(lines.size(), 6U);
@@ -131,11 +129,11 @@ TEST(FlatProgram, SinumerikHeaderAndEndAsSection64) {
   EXPECT_EQ(lines.back(), "M30");
   EXPECT_EQ(out.value().file_name, "FLAT_1.MPF");
   options.units = Units::inch;
-  EXPECT_EQ(lines_of(program_of(paper(), options))[3], "G18 G700 G40 G90 G94 DIAMON");
+  EXPECT_EQ(lines_of(program_of(paper_flat(), options))[3], "G18 G700 G40 G90 G94 DIAMON");
 }
 
 TEST(FlatProgram, WorkedExampleBlocksAreThoseOfSection62) {
-  const LatheFlatParams p = paper();
+  const LatheFlatParams p = paper_flat();
   EXPECT_EQ(motion_of(program_of(p)), expected_motion(p, 1, 17.0, 4, 1.0));
   // Printed ends of section 9: X 32.0000 .. 30.0000, C 20.3641 .. -20.3641.
   const std::string program = program_of(p);
@@ -146,7 +144,7 @@ TEST(FlatProgram, WorkedExampleBlocksAreThoseOfSection62) {
 
 TEST(FlatProgram, FlatsAreOuterLayersInnerAndEveryG93BlockHasItsF) {
   // m = 3, L = 2, R = 3, N = 3, z = -7.5, Sinumerik-free LinuxCNC with 5 decimals.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.flats = 3;
   p.flat_depth_mm = 2.0;
   p.layer_depth_mm = 1.0;
@@ -171,7 +169,7 @@ TEST(FlatProgram, FlatsAreOuterLayersInnerAndEveryG93BlockHasItsF) {
 }
 
 TEST(FlatProgram, InchConvertsXAndTheApproachFeedButNotCOrTheInverseTimeFeed) {
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.steps = 4;
   p.flats = 2;
   p.tool_radius_mm = 2.0;
@@ -195,7 +193,7 @@ TEST(FlatProgram, InchConvertsXAndTheApproachFeedButNotCOrTheInverseTimeFeed) {
 }
 
 TEST(FlatProgram, WarningsAreUpperCaseCommentLines) {
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.feed_mm_per_min = 20000.0;  // over 16 000.7
   p.flatness_tolerance_mm = 0.002;
   const std::vector<std::string> lines = lines_of(program_of(p));
@@ -213,7 +211,7 @@ TEST(FlatProgram, WarningsAreUpperCaseCommentLines) {
 
 TEST(FlatProgram, AnInverseTimeFeedThatPrintsAsZeroIsRefused) {
   // D1000, t = 400, N = 1: chords of 490 mm at 0.001 mm/min give F = 2e-6 per minute.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.part_diameter_mm = 1000.0;
   p.flat_depth_mm = 400.0;
   p.steps = 1;
@@ -222,7 +220,7 @@ TEST(FlatProgram, AnInverseTimeFeedThatPrintsAsZeroIsRefused) {
   ASSERT_FALSE(out.ok());
   EXPECT_EQ(out.error().code, ErrorCode::word_prints_as_zero);
   // The worked example at the same feed prints F0.0019 and F0.0010: fine.
-  LatheFlatParams slow = paper();
+  LatheFlatParams slow = paper_flat();
   slow.feed_mm_per_min = 0.001;
   EXPECT_TRUE(written(slow, {}).ok());
 }

@@ -14,11 +14,13 @@
 #include <numbers>
 #include <vector>
 
+#include "domain/lathe_flat/lathe_flat_settings.h"
+
 namespace cutcalc::domain::lathe_flat {
 namespace {
 
-constexpr FlatSection kPaper{16.0, 15.0, 0.0};    // section 9, point tool
-constexpr FlatSection kPaperR5{16.0, 15.0, 5.0};  // section 9, R5 end mill
+using settings::kPaper;
+using settings::kPaperR5;
 
 double width_of(const FlatSection& flat) {
   return 2.0 * std::sqrt(flat.part_radius_mm * flat.part_radius_mm -

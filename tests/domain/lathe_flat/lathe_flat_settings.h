@@ -5,6 +5,10 @@
 
 namespace cutcalc::domain::lathe_flat::settings {
 
+// Section 9's flat: D32, t = 1 (R2 = 16, d = 15).
+inline constexpr FlatSection kPaper{16.0, 15.0, 0.0};    // point tool
+inline constexpr FlatSection kPaperR5{16.0, 15.0, 5.0};  // R5 end mill
+
 // Section 9: D32, t = 1, point tool, N = 10, f = 100 mm/min.
 inline LatheFlatParams paper_flat() {
   LatheFlatParams p;

@@ -18,9 +18,7 @@ namespace {
 
 using program::WarningCode;
 
-constexpr double kPi = std::numbers::pi;
-
-constexpr auto paper = settings::paper_flat;
+using settings::paper_flat;
 
 LatheFlatResult computed(const LatheFlatParams& p) {
   const auto result = compute_lathe_flat(p);
@@ -42,7 +40,7 @@ std::vector<WarningCode> warning_codes(const LatheFlatParams& p) {
 
 TEST(LatheFlat, EachOfDepthWidthAxisDistanceAndAcrossFlatsGivesTheSameFlat) {
   // F1: t = 1, b = 2 sqrt(31), d = 15, s = 30 (with two flats) on D32.
-  std::vector<LatheFlatParams> ways(4, paper());
+  std::vector<LatheFlatParams> ways(4, paper_flat());
   ways[1].flat_depth_mm.reset();
   ways[1].flat_width_mm = 2.0 * std::sqrt(31.0);
   ways[2].flat_depth_mm.reset();
@@ -62,7 +60,7 @@ TEST(LatheFlat, EachOfDepthWidthAxisDistanceAndAcrossFlatsGivesTheSameFlat) {
 
 TEST(LatheFlat, WidthGivesTheDistanceWithoutCancellation) {
   // F1: d = sqrt((R2 - b/2)(R2 + b/2)) for a flat narrow against the part.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.flat_depth_mm.reset();
   p.flat_width_mm = 7.0;  // F-E1: 7 mm wide on D32 is 0.3875 mm deep
   EXPECT_NEAR(computed(p).flat_depth_mm, 16.0 - std::sqrt(16.0 * 16.0 - 3.5 * 3.5), 1e-12);
@@ -71,7 +69,7 @@ TEST(LatheFlat, WidthGivesTheDistanceWithoutCancellation) {
 
 TEST(LatheFlat, OneOrTwoFlatsKeepTheWholeWidthAndNoSharpCorners) {
   for (const int flats : {1, 2}) {
-    LatheFlatParams p = paper();
+    LatheFlatParams p = paper_flat();
     p.flats = flats;
     p.flat_depth_mm = 15.0;  // alpha_e = 86 deg: sharp for any polygon, not for these
     const LatheFlatResult r = computed(p);
@@ -82,19 +80,19 @@ TEST(LatheFlat, OneOrTwoFlatsKeepTheWholeWidthAndNoSharpCorners) {
 
 TEST(LatheFlat, PolygonFaceWidthAndSharpCornersEitherSideOfTheBoundary) {
   // F4, hexagon on D32: the corners meet on the cylinder at d = R2 cos 30 deg.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.flat_depth_mm.reset();
   p.flats = 6;
-  const double boundary = 16.0 * std::cos(kPi / 6.0);
+  const double boundary = 16.0 * std::cos(std::numbers::pi / 6.0);
   p.axis_distance_mm = boundary + 1e-9;  // shallower: cylindrical lands remain
   LatheFlatResult r = computed(p);
   EXPECT_FALSE(r.sharp_corners);
   EXPECT_NEAR(r.face_width_mm, r.flat_width_mm, 1e-12);
-  EXPECT_LT(r.flat_width_mm, 2.0 * *p.axis_distance_mm * std::tan(kPi / 6.0));
+  EXPECT_LT(r.flat_width_mm, 2.0 * *p.axis_distance_mm * std::tan(std::numbers::pi / 6.0));
   p.axis_distance_mm = boundary - 1e-9;  // deeper: the flats meet
   r = computed(p);
   EXPECT_TRUE(r.sharp_corners);
-  EXPECT_NEAR(r.face_width_mm, 2.0 * *p.axis_distance_mm * std::tan(kPi / 6.0), 1e-12);
+  EXPECT_NEAR(r.face_width_mm, 2.0 * *p.axis_distance_mm * std::tan(std::numbers::pi / 6.0), 1e-12);
   EXPECT_LT(r.face_width_mm, r.flat_width_mm);
   // Well inside: a square on D32 with s = 20: w = s, b = 2 sqrt(16^2 - 10^2).
   p.flats = 4;
@@ -106,7 +104,7 @@ TEST(LatheFlat, PolygonFaceWidthAndSharpCornersEitherSideOfTheBoundary) {
 }
 
 TEST(LatheFlat, StepsGivenOrFromTheTolerance) {
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   LatheFlatResult r = computed(p);
   EXPECT_EQ(r.steps, 10);
   EXPECT_FALSE(r.steps_for_tolerance.has_value());
@@ -128,7 +126,7 @@ TEST(LatheFlat, StepsGivenOrFromTheTolerance) {
 
 TEST(LatheFlat, LayersAreEqualWithTheLastExactlyTheDepth) {
   // F17: L = ceil(t/a - 1e-9): t = 2.1, a = 0.3 gives 7.000000000000001 in doubles, 7 layers.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.flat_depth_mm = 2.1;
   p.layer_depth_mm = 0.3;
   LatheFlatResult r = computed(p);
@@ -157,7 +155,7 @@ TEST(LatheFlat, LayersAreEqualWithTheLastExactlyTheDepth) {
 
 TEST(LatheFlat, ClearXIsTheDeepestLayerStartPlusTheClearance) {
   // F18: X_c = R2 + R R2/d + c of the final layer.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.tool_radius_mm = 5.0;
   p.clearance_mm = 2.5;
   p.flat_depth_mm = 3.0;
@@ -165,12 +163,12 @@ TEST(LatheFlat, ClearXIsTheDeepestLayerStartPlusTheClearance) {
   const LatheFlatResult r = computed(p);
   EXPECT_NEAR(r.clear_x_mm, 16.0 + 5.0 * 16.0 / 13.0 + 2.5, 1e-12);
   EXPECT_GE(r.clear_x_mm, 16.0 + 5.0 + 2.5);
-  EXPECT_NEAR(computed(paper()).clear_x_mm, 17.0, 1e-12);  // point tool, c = 1
+  EXPECT_NEAR(computed(paper_flat()).clear_x_mm, 17.0, 1e-12);  // point tool, c = 1
 }
 
 TEST(LatheFlat, WorkedExampleBlocksAndTimes) {
   // Section 9: 20 blocks; cut b/f = 0.111355 min, approach 1 mm at f = 0.01 min.
-  const LatheFlatResult r = computed(paper());
+  const LatheFlatResult r = computed(paper_flat());
   EXPECT_EQ(r.cut_blocks, 20);
   EXPECT_NEAR(r.cut_time_min, 0.111355, 0.5e-6);
   EXPECT_NEAR(r.cut_time_min, 2.0 * std::sqrt(31.0) / 100.0, 1e-14);
@@ -181,7 +179,7 @@ TEST(LatheFlat, WorkedExampleBlocksAndTimes) {
 
 TEST(LatheFlat, BlocksAndTimesSumOverFlatsAndLayers) {
   // F19 with m = 3, L = 2, R = 4, N = 5: the cut time is the sum of the chords over the feed.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.flats = 3;
   p.tool_radius_mm = 4.0;
   p.steps = 5;
@@ -213,7 +211,7 @@ TEST(LatheFlat, BlocksAndTimesSumOverFlatsAndLayers) {
 
 TEST(LatheFlat, ShortestBlockIsTheMiddleChordOfTheShallowestLayer) {
   // F20: worked example 0.53336 mm; F21: 16 000.7 mm/min at 2 ms.
-  LatheFlatResult r = computed(paper());
+  LatheFlatResult r = computed(paper_flat());
   EXPECT_NEAR(r.shortest_block_mm, 0.53336, 0.5e-5);
   EXPECT_NEAR(r.max_feed_by_block_rate_mm_per_min, 16000.7, 0.05);
   EXPECT_NEAR(r.max_feed_by_block_rate_mm_per_min, 60000.0 * r.shortest_block_mm / 2.0, 1e-9);
@@ -223,7 +221,7 @@ TEST(LatheFlat, ShortestBlockIsTheMiddleChordOfTheShallowestLayer) {
   }
   EXPECT_NEAR(r.shortest_block_mm, table_min, 1e-12);
   // With layers, the shortest over all layers: (d_j + R) tan(alpha_e,j / N), minimised in the test.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.flat_depth_mm = 3.0;
   p.layer_depth_mm = 1.0;
   p.tool_radius_mm = 2.0;
@@ -239,7 +237,7 @@ TEST(LatheFlat, ShortestBlockIsTheMiddleChordOfTheShallowestLayer) {
 }
 
 TEST(LatheFlatWarnings, FeedAboveTheBlockRateLimitWarnsOnlyAboveIt) {
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   const double limit = computed(p).max_feed_by_block_rate_mm_per_min;
   p.feed_mm_per_min = limit;
   EXPECT_TRUE(warning_codes(p).empty());
@@ -249,7 +247,7 @@ TEST(LatheFlatWarnings, FeedAboveTheBlockRateLimitWarnsOnlyAboveIt) {
 }
 
 TEST(LatheFlatWarnings, FlatnessOverToleranceOnlyWithBothStepsAndATolerance) {
-  LatheFlatParams p = paper();  // error(10) = 2.9531 um
+  LatheFlatParams p = paper_flat();  // error(10) = 2.9531 um
   p.flatness_tolerance_mm = 0.0029;
   EXPECT_EQ(warning_codes(p), std::vector<WarningCode>{WarningCode::flatness_over_tolerance});
   p.flatness_tolerance_mm = computed(p).flatness_error_mm;  // equal: met
@@ -266,7 +264,7 @@ TEST(LatheFlatWarnings, FlatnessOverToleranceOnlyWithBothStepsAndATolerance) {
 
 TEST(LatheFlatErrors, AFlatOutsideThePartIsRefusedAtEachGivenField) {
   // t >= R2, b >= D, d >= R2, s >= D; just inside is fine.
-  LatheFlatParams base = paper();
+  LatheFlatParams base = paper_flat();
   base.flat_depth_mm.reset();
   base.flats = 2;
   struct Case {
@@ -288,7 +286,7 @@ TEST(LatheFlatErrors, AFlatOutsideThePartIsRefusedAtEachGivenField) {
 }
 
 TEST(LatheFlatErrors, AToleranceNoThousandStepsMeetIsRefused) {
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.part_diameter_mm = 1000.0;
   p.flat_depth_mm = 400.0;
   p.tool_radius_mm = 20.0;
@@ -302,7 +300,7 @@ TEST(LatheFlatErrors, AToleranceNoThousandStepsMeetIsRefused) {
 
 TEST(LatheFlatErrors, MoreThan200000CuttingBlocksAreRefusedWithTheLimit) {
   // 2 N m L: N 1000, m 10, L 10 = 200 000 (allowed); L 11 is over.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   p.steps = 1000;
   p.flats = 10;
   p.layer_depth_mm = 0.1;
@@ -319,7 +317,7 @@ TEST(LatheFlatErrors, MoreThan200000CuttingBlocksAreRefusedWithTheLimit) {
 
 TEST(LatheFlatErrors, AVeryThinLayerIsRefusedByTheBlockCapBeforeTheLayersAreListed) {
   // t/a of 1e12 (or beyond an int) layers: too_many_cut_blocks, not a huge list or an overflow.
-  LatheFlatParams p = paper();
+  LatheFlatParams p = paper_flat();
   for (const double a : {1e-12, 1e-300}) {
     p.layer_depth_mm = a;
     EXPECT_EQ(refusal(p), ErrorCode::too_many_cut_blocks) << a;

@@ -18,20 +18,20 @@
 
 namespace {
 
-namespace detail = cutcalc::domain::polygon::detail;
+namespace polygon_detail = cutcalc::domain::polygon::detail;
 using cutcalc::domain::ErrorCode;
 using cutcalc::test::polygon::generate;
 using cutcalc::test::polygon::hole;
 using cutcalc::test::polygon::kPi;
 
-Eigen::Vector2d end_tangent(const detail::FittedArc& arc) {
+Eigen::Vector2d end_tangent(const polygon_detail::FittedArc& arc) {
   const double sense = arc.sweep > 0.0 ? 1.0 : -1.0;
-  return sense * detail::unit(arc.start_angle + arc.sweep + 0.5 * kPi);
+  return sense * polygon_detail::unit(arc.start_angle + arc.sweep + 0.5 * kPi);
 }
 
-Eigen::Vector2d start_tangent(const detail::FittedArc& arc) {
+Eigen::Vector2d start_tangent(const polygon_detail::FittedArc& arc) {
   const double sense = arc.sweep > 0.0 ? 1.0 : -1.0;
-  return sense * detail::unit(arc.start_angle + 0.5 * kPi);
+  return sense * polygon_detail::unit(arc.start_angle + 0.5 * kPi);
 }
 
 // P19: the biarc joins both end points with their tangents, tangent-continuously, with equal
@@ -41,9 +41,9 @@ TEST(BiarcFit, EqualTangentBiarcJoinsPointsAndTangents) {
   const Eigen::Vector2d P1(3.0, 1.0);
   for (const double turn : {0.0, 0.2, 0.7, 1.3}) {
     SCOPED_TRACE(turn);
-    const Eigen::Vector2d T0 = detail::unit(0.1);
-    const Eigen::Vector2d T1 = detail::unit(0.1 + turn);
-    const auto biarc = detail::fit_biarc(P0, T0, P1, T1);
+    const Eigen::Vector2d T0 = polygon_detail::unit(0.1);
+    const Eigen::Vector2d T1 = polygon_detail::unit(0.1 + turn);
+    const auto biarc = polygon_detail::fit_biarc(P0, T0, P1, T1);
     if (turn == 0.0) {
       // Equal tangents not along the chord: an S-curve of two opposite arcs.
       ASSERT_TRUE(biarc.has_value());
@@ -90,11 +90,11 @@ TEST(BiarcFit, MergingLeavesTwoNTimesMMinusOnePlusOneBlocks) {
   for (int N = 3; N <= 12; ++N) {
     for (const double tolerance : {0.002, 0.0005, 0.0001}) {
       SCOPED_TRACE(testing::Message() << "N " << N << " tol " << tolerance);
-      const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-      const detail::CentrePath path(shape);
-      const auto fit = detail::fit_ellipse_arc(path, tolerance / 20.0);
+      const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+      const polygon_detail::CentrePath path(shape);
+      const auto fit = polygon_detail::fit_ellipse_arc(path, tolerance / 20.0);
       ASSERT_TRUE(fit.ok());
-      const auto blocks = detail::loop_blocks(path, fit.value(), 1e-9);
+      const auto blocks = polygon_detail::loop_blocks(path, fit.value(), 1e-9);
       const int m = fit.value().m;
       if (m == 1) {
         ASSERT_EQ(blocks.size(), 1U);
@@ -118,12 +118,12 @@ TEST(BiarcFit, MergingLeavesTwoNTimesMMinusOnePlusOneBlocks) {
 
 // P21, m = 1: one full circle of radius e about the hole centre, deviation r_max - e.
 TEST(BiarcFit, OneBiarcIsTheCircleOfRadiusE) {
-  const detail::PolygonShape shape = detail::make_polygon_shape(8, 1.0);
-  const detail::CentrePath path(shape);
-  const auto fit = detail::fit_ellipse_arc(path, 0.001 / 20.0);
+  const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(8, 1.0);
+  const polygon_detail::CentrePath path(shape);
+  const auto fit = polygon_detail::fit_ellipse_arc(path, 0.001 / 20.0);
   ASSERT_TRUE(fit.ok());
   ASSERT_EQ(fit.value().m, 1);
-  const auto blocks = detail::loop_blocks(path, fit.value(), 1e-9);
+  const auto blocks = polygon_detail::loop_blocks(path, fit.value(), 1e-9);
   ASSERT_EQ(blocks.size(), 1U);
   EXPECT_NEAR(blocks[0].arc.centre.norm(), 0.0, 1e-14);
   EXPECT_NEAR(blocks[0].arc.radius, shape.e, 1e-14);
@@ -138,7 +138,7 @@ TEST(BiarcFit, OneBiarcIsTheCircleOfRadiusE) {
 // P20 written out literally (exact sines, atan2 spans, every polyline segment) for all m biarcs:
 // the fit's deviation (sampled by rotation, nearest segment by descent, mirror symmetry) agrees.
 TEST(BiarcFit, DeviationMatchesALiteralP20) {
-  auto arc_distance = [](const detail::FittedArc& arc, const Eigen::Vector2d& P) {
+  auto arc_distance = [](const polygon_detail::FittedArc& arc, const Eigen::Vector2d& P) {
     const double a = std::atan2(P.y() - arc.centre.y(), P.x() - arc.centre.x());
     double from_start = std::remainder(a - arc.start_angle, 2.0 * kPi);
     if (from_start < 0.0) {
@@ -152,14 +152,14 @@ TEST(BiarcFit, DeviationMatchesALiteralP20) {
   for (const auto& [N, tolerance] : {std::pair{3, 0.002}, std::pair{4, 0.0003}, std::pair{5, 0.001},
                                      std::pair{7, 0.0005}, std::pair{12, 0.002}}) {
     SCOPED_TRACE(testing::Message() << "N " << N << " tol " << tolerance);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
-    const auto fit = detail::fit_ellipse_arc(path, tolerance / 20.0);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
+    const auto fit = polygon_detail::fit_ellipse_arc(path, tolerance / 20.0);
     ASSERT_TRUE(fit.ok());
     const int m = fit.value().m;
     double deviation = 0.0;
     for (int i = 0; i < m; ++i) {
-      const detail::Biarc& biarc = fit.value().biarcs[static_cast<std::size_t>(i)];
+      const polygon_detail::Biarc& biarc = fit.value().biarcs[static_cast<std::size_t>(i)];
       const double t0 = i * shape.delta / m;
       const double t1 = (i + 1) * shape.delta / m;
       std::vector<Eigen::Vector2d> samples;
@@ -168,10 +168,11 @@ TEST(BiarcFit, DeviationMatchesALiteralP20) {
         deviation = std::max(deviation, std::min(arc_distance(biarc.first, samples.back()),
                                                  arc_distance(biarc.second, samples.back())));
       }
-      for (const detail::FittedArc* arc : {&biarc.first, &biarc.second}) {
+      for (const polygon_detail::FittedArc* arc : {&biarc.first, &biarc.second}) {
         for (int k = 0; k < 150; ++k) {
           const Eigen::Vector2d P =
-              arc->centre + arc->radius * detail::unit(arc->start_angle + k * arc->sweep / 149);
+              arc->centre +
+              arc->radius * polygon_detail::unit(arc->start_angle + k * arc->sweep / 149);
           double nearest = std::numeric_limits<double>::infinity();
           for (std::size_t j = 0; j + 1 < samples.size(); ++j) {
             const Eigen::Vector2d ab = samples[j + 1] - samples[j];
@@ -190,15 +191,15 @@ TEST(BiarcFit, DeviationMatchesALiteralP20) {
 TEST(BiarcFit, ChoosesTheSmallestM) {
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
     const double tolerance = 0.0005 / 20.0;
-    const auto fit = detail::fit_ellipse_arc(path, tolerance);
+    const auto fit = polygon_detail::fit_ellipse_arc(path, tolerance);
     ASSERT_TRUE(fit.ok());
     EXPECT_LE(fit.value().deviation, tolerance);
     const int m = fit.value().m;
     if (m > 1) {
-      const auto smaller = detail::fit_ellipse_arc(path, tolerance, m - 1);
+      const auto smaller = polygon_detail::fit_ellipse_arc(path, tolerance, m - 1);
       ASSERT_FALSE(smaller.ok());
       EXPECT_EQ(smaller.error().code, ErrorCode::tolerance_unreachable);
     }
@@ -218,11 +219,11 @@ TEST(BiarcFit, FittedLoopStaysWithinTheTolerance) {
                         Case{6, 20.0, 0.002}, Case{8, 20.0, 0.0005}, Case{11, 24.0, 0.0001},
                         Case{4, 5.0, 0.0001}, Case{3, 300.0, 0.01}}) {
     SCOPED_TRACE(testing::Message() << "N " << c.N << " d " << c.d << " tol " << c.tolerance);
-    const detail::PolygonShape shape = detail::make_polygon_shape(c.N, c.d);
-    const detail::CentrePath path(shape);
-    const auto fit = detail::fit_ellipse_arc(path, c.tolerance);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(c.N, c.d);
+    const polygon_detail::CentrePath path(shape);
+    const auto fit = polygon_detail::fit_ellipse_arc(path, c.tolerance);
     ASSERT_TRUE(fit.ok());
-    const auto blocks = detail::loop_blocks(path, fit.value(), 1e-9 * c.d);
+    const auto blocks = polygon_detail::loop_blocks(path, fit.value(), 1e-9 * c.d);
     double path_to_arcs = 0.0;
     constexpr int samples = 1500;
     for (int k = 0; k <= samples; ++k) {
@@ -273,9 +274,9 @@ TEST(BiarcFit, FittedLoopStaysWithinTheTolerance) {
 TEST(BiarcFit, JunctionEndsAtTheNearestExactPoint) {
   for (int N : {3, 4, 5, 7}) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
-    const auto fit = detail::fit_ellipse_arc(path, 0.0005 / 20.0);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
+    const auto fit = polygon_detail::fit_ellipse_arc(path, 0.0005 / 20.0);
     ASSERT_TRUE(fit.ok());
     const int m = fit.value().m;
     for (int i = 0; i < m; ++i) {
@@ -288,7 +289,7 @@ TEST(BiarcFit, JunctionEndsAtTheNearestExactPoint) {
       EXPECT_NEAR((path.point_in_phase(0, t) - J).dot(tangent), 0.0, 1e-9);
     }
     // Knot ends carry t_i = i delta / m; the loop ends at N delta.
-    const auto blocks = detail::loop_blocks(path, fit.value(), 1e-9);
+    const auto blocks = polygon_detail::loop_blocks(path, fit.value(), 1e-9);
     EXPECT_NEAR(blocks.back().t_end, 2.0 * kPi / (N - 1.0), 1e-14);
   }
 }

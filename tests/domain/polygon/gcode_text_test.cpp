@@ -15,7 +15,7 @@
 
 namespace {
 
-namespace detail = cutcalc::domain::polygon::detail;
+namespace polygon_detail = cutcalc::domain::polygon::detail;
 using cutcalc::domain::polygon::program_with_warning_comments;
 using cutcalc::test::polygon::arc_lines;
 using cutcalc::test::polygon::four_decimals;
@@ -102,15 +102,15 @@ TEST(GcodeText, TextRulesForEveryNAndMode) {
 }
 
 TEST(GcodeText, NumberFormat) {
-  EXPECT_EQ(detail::fmt4(-0.00004), "0.0000");
-  EXPECT_EQ(detail::fmt4(-0.0), "0.0000");
-  EXPECT_EQ(detail::fmt4(-0.00005001), "-0.0001");
-  EXPECT_EQ(detail::fmt4(300.0), "300.0000");
-  EXPECT_EQ(detail::fmt4(-0.27094), "-0.2709");
-  EXPECT_EQ(detail::fmt4(1.23760430703), "1.2376");
-  EXPECT_EQ(detail::fmt4(24.02466280517), "24.0247");
+  EXPECT_EQ(polygon_detail::fmt4(-0.00004), "0.0000");
+  EXPECT_EQ(polygon_detail::fmt4(-0.0), "0.0000");
+  EXPECT_EQ(polygon_detail::fmt4(-0.00005001), "-0.0001");
+  EXPECT_EQ(polygon_detail::fmt4(300.0), "300.0000");
+  EXPECT_EQ(polygon_detail::fmt4(-0.27094), "-0.2709");
+  EXPECT_EQ(polygon_detail::fmt4(1.23760430703), "1.2376");
+  EXPECT_EQ(polygon_detail::fmt4(24.02466280517), "24.0247");
   for (const double x : {0.00005, 0.00015, 2.5e-5, 1.99995, -7.77775, 123456.78905}) {
-    EXPECT_EQ(detail::fmt4(x), four_decimals(x)) << x;  // the same rounding as printf
+    EXPECT_EQ(polygon_detail::fmt4(x), four_decimals(x)) << x;  // the same rounding as printf
   }
 }
 
@@ -247,8 +247,8 @@ TEST(GcodeText, PrintedLoopLengthAndFeedWords) {
     EXPECT_NEAR(result.loop_length_mm, L_p, 1e-12);
     EXPECT_NEAR(result.feed_per_rev_mm, (N - 1) * L_p, 1e-12);
     // |L_p - L| <= 2 pi tol + rounding
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 20.0);
-    EXPECT_LE(std::abs(L_p - detail::CentrePath(shape).loop_length()),
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 20.0);
+    EXPECT_LE(std::abs(L_p - polygon_detail::CentrePath(shape).loop_length()),
               2.0 * kPi * params.tolerance_mm + 1e-3);
     const double dz = 0.1;
     const std::string flat = four_decimals(result.feed_per_rev_mm);
@@ -279,12 +279,12 @@ TEST(GcodeText, PrintedLoopLengthAndFeedWords) {
 
 // I, J are the unrounded centre minus the unrounded start (normative): compare with the blocks.
 TEST(GcodeText, CentreOffsetsFromUnroundedPoints) {
-  const detail::PolygonShape shape = detail::make_polygon_shape(4, 1.0);
-  const detail::CentrePath path(shape);
-  const auto fit = detail::fit_ellipse_arc(path, 0.005 / 16.0);
+  const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(4, 1.0);
+  const polygon_detail::CentrePath path(shape);
+  const auto fit = polygon_detail::fit_ellipse_arc(path, 0.005 / 16.0);
   ASSERT_TRUE(fit.ok());
-  const auto blocks = detail::loop_blocks(path, fit.value(), 1e-9);
-  const detail::PrintedLoop loop = detail::print_loop(blocks, 16.0);
+  const auto blocks = polygon_detail::loop_blocks(path, fit.value(), 1e-9);
+  const polygon_detail::PrintedLoop loop = polygon_detail::print_loop(blocks, 16.0);
   ASSERT_EQ(loop.blocks.size(), blocks.size());
   Eigen::Vector2d start(0.0, 16.0 * shape.e);
   for (std::size_t b = 0; b < blocks.size(); ++b) {

@@ -24,12 +24,11 @@
 
 namespace {
 
-namespace detail = cutcalc::domain::polygon::detail;
+namespace polygon_detail = cutcalc::domain::polygon::detail;
 using cutcalc::domain::polygon::HoleGeometry;
 using cutcalc::domain::polygon::PlanePoint;
 using cutcalc::domain::polygon::sample_hole_geometry;
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kD = 20.0;  // the spec's d = 20 mm examples
 
 HoleGeometry geometry(int N, double d = kD) {
@@ -41,7 +40,7 @@ HoleGeometry geometry(int N, double d = kD) {
 Eigen::Vector2d vec(const PlanePoint& p) { return {p.x_mm, p.y_mm}; }
 
 // Largest <P, u_j> - rho over the points: > 0 beyond side j.
-double beyond_side(const detail::PolygonShape& shape, const std::vector<PlanePoint>& points,
+double beyond_side(const polygon_detail::PolygonShape& shape, const std::vector<PlanePoint>& points,
                    int j) {
   double worst = -std::numeric_limits<double>::infinity();
   for (const PlanePoint& p : points) {
@@ -67,12 +66,12 @@ TEST(RotorSupportPoint, AttainsTheSupportFunction) {
   std::mt19937_64 random(404);
   std::uniform_real_distribution<double> angle(-20.0, 20.0);
   for (int N = 3; N <= 12; ++N) {
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::Rotor rotor(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::Rotor rotor(shape);
     for (int k = 0; k < 2000; ++k) {
       const double b = angle(random);
       const Eigen::Vector2d p = rotor.support_point(b);
-      EXPECT_NEAR(p.dot(detail::unit(b)), rotor.support(b), 1e-14) << N << " " << b;
+      EXPECT_NEAR(p.dot(polygon_detail::unit(b)), rotor.support(b), 1e-14) << N << " " << b;
       EXPECT_LE(p.norm(), shape.r * (1.0 + 1e-14));
     }
     // In a corner's normal cone the support point is that corner.
@@ -86,7 +85,7 @@ TEST(RotorSupportPoint, AttainsTheSupportFunction) {
 TEST(HoleGeometry, VerticesLieAtTheCircumradiusCounterClockwise) {
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, kD);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, kD);
     const HoleGeometry g = geometry(N);
     ASSERT_EQ(g.polygon.size(), static_cast<std::size_t>(N));
     for (int j = 0; j < N; ++j) {
@@ -97,14 +96,15 @@ TEST(HoleGeometry, VerticesLieAtTheCircumradiusCounterClockwise) {
     // Side 0 at the bottom, parallel to X at Y = -rho (section 1).
     EXPECT_NEAR(g.polygon.front().y_mm, -0.5 * kD, 1e-12 * kD);
     EXPECT_NEAR(g.polygon.back().y_mm, -0.5 * kD, 1e-12 * kD);
-    EXPECT_NEAR(area(g.polygon), N * 0.25 * kD * kD * std::tan(kPi / N), 1e-12 * kD * kD);
+    EXPECT_NEAR(area(g.polygon), N * 0.25 * kD * kD * std::tan(std::numbers::pi / N),
+                1e-12 * kD * kD);
   }
 }
 
 TEST(HoleGeometry, CentrePathRunsBetweenEAndRmaxFromTheStart) {
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, kD);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, kD);
     const HoleGeometry g = geometry(N);
     ASSERT_GE(g.centre_path.size(), static_cast<std::size_t>(8 * N));
     // Section 3: the loop starts at c = (0, e).
@@ -129,8 +129,8 @@ TEST(HoleGeometry, CentrePathRunsBetweenEAndRmaxFromTheStart) {
 
 TEST(HoleGeometry, PosedRotorStaysInsideAndTouchesEverySide) {
   for (int N = 3; N <= 12; ++N) {
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, kD);
-    const detail::CentrePath path(detail::make_polygon_shape(N, 1.0));
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, kD);
+    const polygon_detail::CentrePath path(polygon_detail::make_polygon_shape(N, 1.0));
     const HoleGeometry g = geometry(N);
     ASSERT_GE(g.rotor_positions.size(), 3u);
     for (std::size_t i = 0; i < g.rotor_positions.size(); ++i) {
@@ -139,7 +139,7 @@ TEST(HoleGeometry, PosedRotorStaysInsideAndTouchesEverySide) {
       // Section 3: evenly spaced over one loop, t = i N delta / poses; axis c(t) (P7).
       const double t =
           N * shape.delta * static_cast<double>(i) / static_cast<double>(g.rotor_positions.size());
-      EXPECT_NEAR(pose.phase_deg, t * 180.0 / kPi, 1e-9);
+      EXPECT_NEAR(pose.phase_deg, t * 180.0 / std::numbers::pi, 1e-9);
       EXPECT_NEAR((vec(pose.axis) - kD * path.point(t)).norm(), 0.0, 1e-12 * kD);
       ASSERT_GE(pose.outline.size(), static_cast<std::size_t>(2 * N));
       for (int j = 0; j < N; ++j) {
@@ -160,7 +160,7 @@ TEST(HoleGeometry, PosedRotorStaysInsideAndTouchesEverySide) {
 TEST(HoleGeometry, PredictedHoleLiesInsideThePolygonUpToEverySide) {
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, kD);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, kD);
     const HoleGeometry g = geometry(N);
     ASSERT_GE(g.predicted_hole.size(), static_cast<std::size_t>(N));
     for (int j = 0; j < N; ++j) {
@@ -178,7 +178,7 @@ TEST(HoleGeometry, PredictedHoleMissesTheUncutCornerAreaOfP17) {
     SCOPED_TRACE(N);
     const HoleGeometry g = geometry(N);
     const double uncut = area(g.polygon) - area(g.predicted_hole);
-    const double want = detail::uncut_area_coefficient(N) * kD * kD;  // kappa_A d^2
+    const double want = polygon_detail::uncut_area_coefficient(N) * kD * kD;  // kappa_A d^2
     // The polyline runs on the chords of the corner walls, so a little more is left uncut than
     // the exact wall leaves: below 0.3 % with 64 samples per corner.
     EXPECT_NEAR(uncut, want, 4e-3 * want + 1e-12 * kD * kD);
@@ -192,10 +192,10 @@ TEST(HoleGeometry, FinelySampledCornerWallEnclosesExactlyTheUncutAreaOfP17) {
   // 0.1 % (N = 6) to 4 %.
   for (const int N : {4, 5, 6, 7, 12}) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
-    const detail::Rotor rotor(shape);
-    std::vector<Eigen::Vector2d> corner = detail::corner_wall(path, rotor, 512);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
+    const polygon_detail::Rotor rotor(shape);
+    std::vector<Eigen::Vector2d> corner = polygon_detail::corner_wall(path, rotor, 512);
     corner.insert(corner.begin(), shape.vertex(0));
     double twice = 0.0;
     for (std::size_t i = 0; i < corner.size(); ++i) {
@@ -204,7 +204,7 @@ TEST(HoleGeometry, FinelySampledCornerWallEnclosesExactlyTheUncutAreaOfP17) {
       twice += a.x() * b.y() - b.x() * a.y();
     }
     const double uncut = N * 0.5 * std::abs(twice);
-    const double want = detail::uncut_area_coefficient(N);
+    const double want = polygon_detail::uncut_area_coefficient(N);
     EXPECT_NEAR(uncut, want, 1e-4 * want);
     // The wall starts on side 0 and ends on side 1.
     EXPECT_NEAR(corner[1].dot(shape.u(0)), shape.rho, 1e-12);
@@ -215,16 +215,16 @@ TEST(HoleGeometry, FinelySampledCornerWallEnclosesExactlyTheUncutAreaOfP17) {
 TEST(HoleGeometry, CornerWallKeepsTheGapOfP15OnTheBisector) {
   for (int N = 4; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
-    const detail::Rotor rotor(shape);
-    const double bisector = 0.5 * (kPi - 2.0 * kPi / N);
-    EXPECT_NEAR(detail::corner_wall_distance(path, rotor, bisector), detail::corner_gap(shape),
-                1e-9);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
+    const polygon_detail::Rotor rotor(shape);
+    const double bisector = 0.5 * (std::numbers::pi - 2.0 * std::numbers::pi / N);
+    EXPECT_NEAR(polygon_detail::corner_wall_distance(path, rotor, bisector),
+                polygon_detail::corner_gap(shape), 1e-9);
     // The gap is the wall's nearest approach to the vertex (section 4: min s = g).
     for (const double gamma : {0.0, 0.3 * bisector, 0.9 * bisector, 1.7 * bisector}) {
-      EXPECT_GE(detail::corner_wall_distance(path, rotor, gamma),
-                detail::corner_gap(shape) - 1e-12);
+      EXPECT_GE(polygon_detail::corner_wall_distance(path, rotor, gamma),
+                polygon_detail::corner_gap(shape) - 1e-12);
     }
     // In the drawing: every vertex keeps the same gap, up to the sampling of the wall.
     const HoleGeometry g = geometry(N);
@@ -233,8 +233,8 @@ TEST(HoleGeometry, CornerWallKeepsTheGapOfP15OnTheBisector) {
       for (const PlanePoint& p : g.predicted_hole) {
         nearest = std::min(nearest, (vec(p) - vec(vertex)).norm());
       }
-      EXPECT_GE(nearest, detail::corner_gap(shape) * kD - 1e-9 * kD);
-      EXPECT_LE(nearest, detail::corner_gap(shape) * kD * 1.01);
+      EXPECT_GE(nearest, polygon_detail::corner_gap(shape) * kD - 1e-9 * kD);
+      EXPECT_LE(nearest, polygon_detail::corner_gap(shape) * kD * 1.01);
     }
   }
 }
@@ -264,8 +264,8 @@ TEST(HoleGeometry, CornerViewFramesTheRoundedCornerOfTheFirstVertex) {
     }
     EXPECT_LT(reach, g.corner_view_radius_mm);
     EXPECT_GT(reach, 0.7 * g.corner_view_radius_mm);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, kD);
-    EXPECT_GT(g.corner_view_radius_mm, 2.0 * detail::corner_gap(shape));
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, kD);
+    EXPECT_GT(g.corner_view_radius_mm, 2.0 * polygon_detail::corner_gap(shape));
     EXPECT_LT(g.corner_view_radius_mm, shape.a);
   }
 }

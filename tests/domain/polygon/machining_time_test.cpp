@@ -12,12 +12,12 @@
 namespace {
 
 namespace polygon = cutcalc::domain::polygon;
-namespace detail = polygon::detail;
+namespace polygon_detail = polygon::detail;
 using polygon::Synchronization;
 
 // N = 4 at 30 rpm, 2 layers of 0.3 mm on a 6 mm loop (dz / L_p = 0.05), 3 loops per layer.
-detail::TimeInputs inputs() {
-  detail::TimeInputs in;
+polygon_detail::TimeInputs inputs() {
+  polygon_detail::TimeInputs in;
   in.N = 4;
   in.layers = 2.0;
   in.dz_mm = 0.3;
@@ -35,40 +35,40 @@ const double kRamp = std::sqrt(1.0 + 0.05 * 0.05);
 
 // P32: n lpl loops of 1 / ((N - 1) S) min each; G95 keeps the loop time on the ramp too.
 TEST(PolygonMachiningTime, WorkingTimeIsTheLoopsAtOneLoopPerThirdOfARevolution) {
-  EXPECT_NEAR(detail::machining_time(inputs()).working_min, 6.0 / 90.0, 1e-15);
+  EXPECT_NEAR(polygon_detail::machining_time(inputs()).working_min, 6.0 / 90.0, 1e-15);
 }
 
 // P32: with one loop per layer a flat loop follows the last layer.
 TEST(PolygonMachiningTime, OneLoopPerLayerAddsTheFinalFlatLoop) {
   auto in = inputs();
   in.loops_per_layer = 1;
-  EXPECT_NEAR(detail::machining_time(in).working_min, 3.0 / 90.0, 1e-15);
+  EXPECT_NEAR(polygon_detail::machining_time(in).working_min, 3.0 / 90.0, 1e-15);
 }
 
 // P32, c_axis: G94 F along XYZ makes each of the n ramp loops longer by the helix factor.
 TEST(PolygonMachiningTime, CAxisRampLoopsTakeTheHelixFactorLonger) {
   auto in = inputs();
   in.synchronization = Synchronization::c_axis;
-  EXPECT_NEAR(detail::machining_time(in).working_min, 6.0 / 90.0 + 2.0 / 90.0 * (kRamp - 1.0),
-              1e-15);
+  EXPECT_NEAR(polygon_detail::machining_time(in).working_min,
+              6.0 / 90.0 + 2.0 / 90.0 * (kRamp - 1.0), 1e-15);
 }
 
 // P33: G95 linuxcnc / sinumerik plunge at the modal ramp F; Fanuc G95 and c_axis at S F_rev.
 TEST(PolygonMachiningTime, PlungeRunsAtTheRampFeedOnlyWhereItIsModal) {
   auto in = inputs();
-  EXPECT_NEAR(detail::machining_time(in).plunge_min, 5.0 / (30.0 * 18.0 * kRamp), 1e-15);
+  EXPECT_NEAR(polygon_detail::machining_time(in).plunge_min, 5.0 / (30.0 * 18.0 * kRamp), 1e-15);
   in.plunge_at_ramp_feed = false;
-  EXPECT_NEAR(detail::machining_time(in).plunge_min, 5.0 / (30.0 * 18.0), 1e-15);
+  EXPECT_NEAR(polygon_detail::machining_time(in).plunge_min, 5.0 / (30.0 * 18.0), 1e-15);
   in.plunge_at_ramp_feed = true;
   in.synchronization = Synchronization::c_axis;
-  EXPECT_NEAR(detail::machining_time(in).plunge_min, 5.0 / (30.0 * 18.0), 1e-15);
+  EXPECT_NEAR(polygon_detail::machining_time(in).plunge_min, 5.0 / (30.0 * 18.0), 1e-15);
 }
 
 // P34: the final G0 Z from the depth to the safe height; the cycle is the sum.
 TEST(PolygonMachiningTime, RapidIsTheFinalRetractAndCycleTheSum) {
   auto in = inputs();
   in.rapid_mm_per_min = 24000.0;
-  const auto time = detail::machining_time(in);
+  const auto time = polygon_detail::machining_time(in);
   EXPECT_NEAR(time.rapid_min, 5.6 / 24000.0, 1e-15);
   EXPECT_NEAR(time.cycle_min, time.working_min + time.plunge_min + time.rapid_min, 1e-15);
 }

@@ -21,7 +21,7 @@
 
 namespace {
 
-namespace detail = cutcalc::domain::polygon::detail;
+namespace polygon_detail = cutcalc::domain::polygon::detail;
 using cutcalc::domain::ErrorCode;
 using cutcalc::domain::polygon::generate_polygon_hole;
 using cutcalc::test::polygon::generate;
@@ -41,12 +41,12 @@ std::set<std::string> codes(const cutcalc::test::polygon::PolygonHoleResult& res
 // P26 is zero on the exact motion: the rotor at c(t) with phi = -t touches and never cuts.
 TEST(PolygonOvercut, ZeroOnTheExactMotion) {
   for (int N = 3; N <= 12; ++N) {
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 20.0);
-    const detail::CentrePath path(shape);
-    const detail::Rotor rotor(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 20.0);
+    const polygon_detail::CentrePath path(shape);
+    const polygon_detail::Rotor rotor(shape);
     for (int k = 0; k <= 300; ++k) {
       const double t = k * N * shape.delta / 300.0;
-      EXPECT_NEAR(detail::penetration(shape, rotor, path.point(t), -t), 0.0, 1e-12) << N;
+      EXPECT_NEAR(polygon_detail::penetration(shape, rotor, path.point(t), -t), 0.0, 1e-12) << N;
     }
   }
 }
@@ -87,16 +87,16 @@ TEST(PolygonOvercut, RefinedSamplingMatchesDenseSampling) {
   for (int N = 3; N <= 12; ++N) {
     for (const double tolerance : {0.002, 0.0005}) {
       SCOPED_TRACE(testing::Message() << "N " << N << " tol " << tolerance);
-      const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-      const detail::CentrePath path(shape);
-      const detail::Rotor rotor(shape);
-      const auto fit = detail::fit_ellipse_arc(path, tolerance / 20.0);
+      const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+      const polygon_detail::CentrePath path(shape);
+      const polygon_detail::Rotor rotor(shape);
+      const auto fit = polygon_detail::fit_ellipse_arc(path, tolerance / 20.0);
       ASSERT_TRUE(fit.ok());
-      const auto blocks = detail::loop_blocks(path, fit.value(), 1e-9);
+      const auto blocks = polygon_detail::loop_blocks(path, fit.value(), 1e-9);
       for (const auto sync : {Synchronization::feed_per_rev, Synchronization::c_axis}) {
-        const auto segments = detail::motion_segments(shape, fit.value(), blocks, sync);
-        const double refined = detail::predicted_overcut(shape, rotor, segments);
-        const double dense = detail::predicted_overcut(shape, rotor, segments, 3000, false);
+        const auto segments = polygon_detail::motion_segments(shape, fit.value(), blocks, sync);
+        const double refined = polygon_detail::predicted_overcut(shape, rotor, segments);
+        const double dense = polygon_detail::predicted_overcut(shape, rotor, segments, 3000, false);
         EXPECT_GE(refined, dense - 1e-12);
         EXPECT_NEAR(refined, dense, 1e-9);
       }
@@ -109,28 +109,28 @@ TEST(PolygonOvercut, RefinedSamplingMatchesDenseSampling) {
 TEST(PolygonOvercut, CongruentSegmentsCoverTheWholeLoop) {
   for (int N : {3, 4, 6, 9}) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
-    const detail::Rotor rotor(shape);
-    const auto fit = detail::fit_ellipse_arc(path, 0.001 / 20.0);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
+    const polygon_detail::Rotor rotor(shape);
+    const auto fit = polygon_detail::fit_ellipse_arc(path, 0.001 / 20.0);
     ASSERT_TRUE(fit.ok());
-    const auto blocks = detail::loop_blocks(path, fit.value(), 1e-9);
+    const auto blocks = polygon_detail::loop_blocks(path, fit.value(), 1e-9);
     const double L_u = blocks.back().s_end;
-    std::vector<detail::MotionSegment> whole_c_axis;
-    std::vector<detail::MotionSegment> whole_g95;
+    std::vector<polygon_detail::MotionSegment> whole_c_axis;
+    std::vector<polygon_detail::MotionSegment> whole_g95;
     const double rate = -2.0 * std::numbers::pi / ((N - 1.0) * L_u);
     for (const auto& block : blocks) {
       whole_c_axis.push_back({block.arc, -block.t_start, -block.t_end});
       whole_g95.push_back({block.arc, rate * block.s_start, rate * block.s_end});
     }
     const auto c_axis =
-        detail::motion_segments(shape, fit.value(), blocks, Synchronization::c_axis);
+        polygon_detail::motion_segments(shape, fit.value(), blocks, Synchronization::c_axis);
     const auto g95 =
-        detail::motion_segments(shape, fit.value(), blocks, Synchronization::feed_per_rev);
-    EXPECT_NEAR(detail::predicted_overcut(shape, rotor, c_axis),
-                detail::predicted_overcut(shape, rotor, whole_c_axis, 400), 1e-10);
-    EXPECT_NEAR(detail::predicted_overcut(shape, rotor, g95),
-                detail::predicted_overcut(shape, rotor, whole_g95, 400), 1e-10);
+        polygon_detail::motion_segments(shape, fit.value(), blocks, Synchronization::feed_per_rev);
+    EXPECT_NEAR(polygon_detail::predicted_overcut(shape, rotor, c_axis),
+                polygon_detail::predicted_overcut(shape, rotor, whole_c_axis, 400), 1e-10);
+    EXPECT_NEAR(polygon_detail::predicted_overcut(shape, rotor, g95),
+                polygon_detail::predicted_overcut(shape, rotor, whole_g95, 400), 1e-10);
   }
 }
 
@@ -147,14 +147,14 @@ TEST(PolygonOvercut, OneBlockLoopIsTheSameInBothModes) {
 // Section 8: a = 16, 1 um, 2 ms: L_min 0.2294 mm, limit 6881 mm/min; at 30 rpm F_prog = 720.7.
 // Hexagon d = 20 at 1000 rpm: 14 433 > 3 614 mm/min.
 TEST(PolygonBlockRate, SectionEightExamples) {
-  const detail::PolygonShape shape = detail::make_polygon_shape(4, 1.0);
-  const detail::CentrePath path(shape);
-  const auto fit = detail::fit_ellipse_arc(path, 0.001 / 16.0);
+  const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(4, 1.0);
+  const polygon_detail::CentrePath path(shape);
+  const auto fit = polygon_detail::fit_ellipse_arc(path, 0.001 / 16.0);
   ASSERT_TRUE(fit.ok());
-  const auto blocks = detail::loop_blocks(path, fit.value(), 1e-9);
-  const double L_min = 16.0 * detail::shortest_block_length(blocks);
+  const auto blocks = polygon_detail::loop_blocks(path, fit.value(), 1e-9);
+  const double L_min = 16.0 * polygon_detail::shortest_block_length(blocks);
   EXPECT_NEAR(L_min, 0.2294, 5e-5);
-  EXPECT_NEAR(detail::max_feed_by_block_rate(L_min, 2.0), 6881.0, 0.5);
+  EXPECT_NEAR(polygon_detail::max_feed_by_block_rate(L_min, 2.0), 6881.0, 0.5);
 
   const auto square = generate(square_a16());
   EXPECT_NEAR(square.max_feed_by_block_rate_mm_per_min, 6880.93938, 1e-5);
@@ -188,8 +188,8 @@ TEST(PolygonBlockRate, PhaseWarningOnlyWithFeedPerRev) {
 
 // Section 10: more than 200 000 arc blocks, counted as (n loops_per_layer + (1 if 1)) blocks.
 TEST(PolygonErrors, ProgramTooLarge) {
-  EXPECT_EQ(detail::program_arc_blocks(2000.0, 100, 1), 200000.0);
-  EXPECT_EQ(detail::program_arc_blocks(7999.0, 1, 25), 200000.0);
+  EXPECT_EQ(polygon_detail::program_arc_blocks(2000.0, 100, 1), 200000.0);
+  EXPECT_EQ(polygon_detail::program_arc_blocks(7999.0, 1, 25), 200000.0);
   PolygonHoleParams params = hole(6, 20.0, 0.005);  // 1 block per loop
   params.loops_per_layer = 100;
   params.depth_mm = 2.001;
@@ -205,11 +205,11 @@ TEST(PolygonErrors, ProgramTooLarge) {
 }
 
 TEST(PolygonErrors, LayerCountRoundsDownWithinOneBillionth) {
-  EXPECT_EQ(detail::split_depth(0.3, 0.1).n, 3.0);  // 0.3 / 0.1 = 2.9999999999999996
-  EXPECT_EQ(detail::split_depth(0.30000001, 0.1).n, 4.0);
-  EXPECT_EQ(detail::split_depth(0.05, 0.1).n, 1.0);
-  EXPECT_EQ(detail::split_depth(1e-12, 1000.0).n, 1.0);  // never zero layers
-  EXPECT_NEAR(detail::split_depth(0.25, 0.1).dz, 0.25 / 3.0, 1e-17);
+  EXPECT_EQ(polygon_detail::split_depth(0.3, 0.1).n, 3.0);  // 0.3 / 0.1 = 2.9999999999999996
+  EXPECT_EQ(polygon_detail::split_depth(0.30000001, 0.1).n, 4.0);
+  EXPECT_EQ(polygon_detail::split_depth(0.05, 0.1).n, 1.0);
+  EXPECT_EQ(polygon_detail::split_depth(1e-12, 1000.0).n, 1.0);  // never zero layers
+  EXPECT_NEAR(polygon_detail::split_depth(0.25, 0.1).dz, 0.25 / 3.0, 1e-17);
 }
 
 // Randomized valid inputs: every result is finite and non-negative, or one of the domain errors.

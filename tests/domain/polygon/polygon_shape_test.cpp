@@ -14,7 +14,7 @@
 
 namespace {
 
-namespace detail = cutcalc::domain::polygon::detail;
+namespace polygon_detail = cutcalc::domain::polygon::detail;
 using cutcalc::test::polygon::kPi;
 
 // A value printed with 10 significant digits: half a unit in the last digit, relative.
@@ -51,8 +51,8 @@ constexpr std::array<ShapeRow, 10> kShapeTable{{
 TEST(PolygonShape, SectionFourTableForEveryN) {
   for (const ShapeRow& row : kShapeTable) {
     SCOPED_TRACE(row.N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(row.N, 1.0);
-    const detail::CentrePath path(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(row.N, 1.0);
+    const polygon_detail::CentrePath path(shape);
     EXPECT_NEAR(shape.q, row.q, ten_digits(row.q));
     EXPECT_NEAR(shape.e, row.e, ten_digits(row.e));
     EXPECT_NEAR(shape.r, row.r, ten_digits(row.r));
@@ -60,25 +60,28 @@ TEST(PolygonShape, SectionFourTableForEveryN) {
     EXPECT_NEAR(shape.B, row.B, ten_digits(row.B));
     EXPECT_NEAR(shape.r_max, row.r_max, ten_digits(row.r_max));
     EXPECT_NEAR(path.loop_length(), row.L, ten_digits(row.L));
-    EXPECT_NEAR(detail::corner_gap(shape), row.g, ten_digits(row.g));
-    EXPECT_NEAR(detail::corner_wall_min_radius(path), row.rho_c, ten_digits(row.rho_c));
-    EXPECT_NEAR(detail::uncut_area_coefficient(row.N), row.kappa_A, ten_digits(row.kappa_A));
+    EXPECT_NEAR(polygon_detail::corner_gap(shape), row.g, ten_digits(row.g));
+    EXPECT_NEAR(polygon_detail::corner_wall_min_radius(path), row.rho_c, ten_digits(row.rho_c));
+    EXPECT_NEAR(polygon_detail::uncut_area_coefficient(row.N), row.kappa_A,
+                ten_digits(row.kappa_A));
   }
 }
 
 TEST(PolygonShape, ClosedFormsOfTheSquare) {
-  const detail::PolygonShape shape = detail::make_polygon_shape(4, 2.0);  // square of side 2
+  const polygon_detail::PolygonShape shape =
+      polygon_detail::make_polygon_shape(4, 2.0);  // square of side 2
   EXPECT_NEAR(shape.A, 1.0 + 1.0 / std::sqrt(3.0), 1e-15);
   EXPECT_NEAR(shape.B, 1.0 - 1.0 / std::sqrt(3.0), 1e-15);
-  const detail::CentrePath path(shape);
+  const polygon_detail::CentrePath path(shape);
   // P16: rho_c = (r - B)^2 / (A + r) for even N; (2 - sqrt3) / (1 + sqrt3) a for the square.
-  EXPECT_NEAR(detail::corner_wall_min_radius(path),
+  EXPECT_NEAR(polygon_detail::corner_wall_min_radius(path),
               (shape.r - shape.B) * (shape.r - shape.B) / (shape.A + shape.r), 1e-14);
-  EXPECT_NEAR(detail::corner_wall_min_radius(path),
+  EXPECT_NEAR(polygon_detail::corner_wall_min_radius(path),
               (2.0 - std::sqrt(3.0)) / (1.0 + std::sqrt(3.0)) * shape.a, 1e-14);
   // P17: the classical Reuleaux-drill result.
-  EXPECT_NEAR(detail::uncut_area_coefficient(4), 4.0 - 2.0 * std::sqrt(3.0) - kPi / 6.0, 1e-15);
-  EXPECT_NEAR(detail::uncut_area_coefficient(4), 0.01229960926, 5e-12);
+  EXPECT_NEAR(polygon_detail::uncut_area_coefficient(4), 4.0 - 2.0 * std::sqrt(3.0) - kPi / 6.0,
+              1e-15);
+  EXPECT_NEAR(polygon_detail::uncut_area_coefficient(4), 0.01229960926, 5e-12);
 }
 
 // P17 by Green's theorem for N = 4 and 5, where the corner wall is exactly the path X of rotor
@@ -87,8 +90,8 @@ TEST(PolygonShape, ClosedFormsOfTheSquare) {
 TEST(PolygonShape, UncutAreaFromTheCornerPathForNFourAndFive) {
   for (int N : {4, 5}) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
     const double t0 = 2.0 * shape.delta;
     const double t1 = (N - 1.0) * shape.delta;
     const Eigen::Vector2d V0 = shape.vertex(0);
@@ -97,20 +100,22 @@ TEST(PolygonShape, UncutAreaFromTheCornerPathForNFourAndFive) {
     auto edge = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
       return 0.5 * (a.x() * b.y() - a.y() * b.x());
     };
-    double area = edge(V0, detail::corner_path(path, t1)) + edge(detail::corner_path(path, t0), V0);
+    double area = edge(V0, polygon_detail::corner_path(path, t1)) +
+                  edge(polygon_detail::corner_path(path, t0), V0);
     constexpr int n = 20000;  // Simpson on the wall
     const double h = (t0 - t1) / n;
     double integral = 0.0;
     for (int k = 0; k <= n; ++k) {
       const double t = t1 + k * h;
-      const Eigen::Vector2d X = detail::corner_path(path, t);
+      const Eigen::Vector2d X = polygon_detail::corner_path(path, t);
       const double theta_1 = -0.5 * kPi + 2.0 * kPi / shape.M;
-      const Eigen::Vector2d dX = path.velocity(t) - shape.r * detail::unit(theta_1 - t + 0.5 * kPi);
+      const Eigen::Vector2d dX =
+          path.velocity(t) - shape.r * polygon_detail::unit(theta_1 - t + 0.5 * kPi);
       const double f = 0.5 * (X.x() * dX.y() - X.y() * dX.x());
       integral += f * (k == 0 || k == n ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0));
     }
     area += integral * h / 3.0;
-    EXPECT_NEAR(N * std::abs(area), detail::uncut_area_coefficient(N), 1e-10);
+    EXPECT_NEAR(N * std::abs(area), polygon_detail::uncut_area_coefficient(N), 1e-10);
   }
 }
 
@@ -118,12 +123,12 @@ TEST(PolygonShape, UncutAreaFromTheCornerPathForNFourAndFive) {
 TEST(PolygonShape, CornerGapIsTheCornerPathOnTheBisector) {
   for (int N = 4; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
     const double t_star = 0.5 * (N + 1.0) * shape.delta;
-    const Eigen::Vector2d X = detail::corner_path(path, t_star);
-    EXPECT_NEAR((shape.vertex(0) - X).norm(), detail::corner_gap(shape), 1e-13);
-    EXPECT_NEAR(detail::cross(shape.vertex(0).normalized(), X), 0.0, 1e-13);
+    const Eigen::Vector2d X = polygon_detail::corner_path(path, t_star);
+    EXPECT_NEAR((shape.vertex(0) - X).norm(), polygon_detail::corner_gap(shape), 1e-13);
+    EXPECT_NEAR(polygon_detail::cross(shape.vertex(0).normalized(), X), 0.0, 1e-13);
   }
 }
 
@@ -147,12 +152,12 @@ TEST(PolygonShape, SectionTwelveReferenceNumbers) {
   }};
   for (const Row& row : rows) {
     SCOPED_TRACE(testing::Message() << "N " << row.N << " d " << row.d);
-    const detail::PolygonShape shape = detail::make_polygon_shape(row.N, row.d);
-    const detail::CentrePath path(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(row.N, row.d);
+    const polygon_detail::CentrePath path(shape);
     EXPECT_NEAR(shape.e, row.e, 5e-7);
     EXPECT_NEAR(2.0 * shape.r, row.span, 5e-5);
     EXPECT_NEAR(path.loop_length(), row.L, 5e-7);
-    EXPECT_NEAR(detail::corner_wall_min_radius(path), row.rho_c, 5e-7);
+    EXPECT_NEAR(polygon_detail::corner_wall_min_radius(path), row.rho_c, 5e-7);
     const auto result =
         cutcalc::test::polygon::generate(cutcalc::test::polygon::hole(row.N, row.d));
     EXPECT_NEAR(result.uncut_corner_area_mm2, row.uncut, 5e-7);
@@ -166,8 +171,8 @@ TEST(PolygonShape, SectionTwelveReferenceNumbers) {
 TEST(CentrePath, LadderConditionsOfEveryPhase) {
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 20.0);
-    const detail::CentrePath path(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 20.0);
+    const polygon_detail::CentrePath path(shape);
     for (int k = 0; k <= 997; ++k) {
       const double t = k * N * shape.delta / 997.0;
       const int p = std::min(static_cast<int>(t / shape.delta), N - 1);
@@ -185,8 +190,8 @@ TEST(CentrePath, LadderConditionsOfEveryPhase) {
 TEST(CentrePath, ExtremesJoinsAndDerivatives) {
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 20.0);
-    const detail::CentrePath path(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 20.0);
+    const polygon_detail::CentrePath path(shape);
     EXPECT_NEAR(path.point(0.0).x(), 0.0, 1e-14);
     EXPECT_NEAR(path.point(0.0).y(), shape.e, 1e-14);
     for (int p = 0; p < N; ++p) {
@@ -200,7 +205,7 @@ TEST(CentrePath, ExtremesJoinsAndDerivatives) {
       const Eigen::Vector2d v_start = path.velocity_in_phase(p + 1, 0.0);
       EXPECT_NEAR((v_end - v_start).norm(), 0.0, 1e-12);
       // Counter-clockwise: c x c' > 0.
-      EXPECT_GT(detail::cross(start, v_start), 0.0);
+      EXPECT_GT(polygon_detail::cross(start, v_start), 0.0);
     }
     const double h = 1e-6;
     for (double t : {0.1 * shape.delta, 1.37 * shape.delta, 2.9 * shape.delta}) {
@@ -216,8 +221,8 @@ TEST(CentrePath, ExtremesJoinsAndDerivatives) {
 TEST(CentrePath, LoopLengthMatchesAFineQuadrature) {
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
     constexpr int n = 20000;
     const double h = shape.delta / n;
     double sum = 0.0;

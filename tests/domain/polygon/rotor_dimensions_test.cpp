@@ -19,12 +19,12 @@
 
 namespace {
 
-namespace detail = cutcalc::domain::polygon::detail;
+namespace polygon_detail = cutcalc::domain::polygon::detail;
 using cutcalc::domain::polygon::RotorDimensions;
 using cutcalc::test::polygon::kPi;
 
 RotorDimensions dimensions(int N, double d) {
-  return detail::rotor_dimensions(detail::make_polygon_shape(N, d));
+  return polygon_detail::rotor_dimensions(polygon_detail::make_polygon_shape(N, d));
 }
 
 // P28: the paper's square a = 16 (d = 16): 3 corners on 18.4752, 120 deg, R1 = R2 = d, both
@@ -74,8 +74,8 @@ TEST(RotorDimensions, PaperToolAgainstTheExactRotorForDiameter20) {
 TEST(RotorDimensions, WidthsAndNeckAgreeWithTheSampledSupportFunction) {
   for (int N = 3; N <= 12; ++N) {
     const double d = 20.0;
-    const auto shape = detail::make_polygon_shape(N, d);
-    const detail::Rotor rotor(shape);
+    const auto shape = polygon_detail::make_polygon_shape(N, d);
+    const polygon_detail::Rotor rotor(shape);
     double width_min = std::numeric_limits<double>::infinity();
     double width_max = 0.0;
     double h_min = std::numeric_limits<double>::infinity();
@@ -87,7 +87,7 @@ TEST(RotorDimensions, WidthsAndNeckAgreeWithTheSampledSupportFunction) {
       width_max = std::max(width_max, width);
       h_min = std::min(h_min, rotor.support(b));
     }
-    const RotorDimensions dims = detail::rotor_dimensions(shape);
+    const RotorDimensions dims = polygon_detail::rotor_dimensions(shape);
     EXPECT_NEAR(dims.width_min_mm, width_min, 1e-6 * d) << N;
     EXPECT_NEAR(dims.width_max_mm, width_max, 1e-6 * d) << N;
     EXPECT_NEAR(dims.neck_diameter_max_mm, 2.0 * h_min, 1e-6 * d) << N;
@@ -100,33 +100,34 @@ TEST(RotorDimensions, WidthsAndNeckAgreeWithTheSampledSupportFunction) {
 
 // P31 = P16: the square a = 16 has rho_c = 1.5692 mm; the triangle's corners stay sharp.
 TEST(RotorDimensions, CornerRadiusOfTheSquareAndTheTriangle) {
-  const auto square = detail::make_polygon_shape(4, 1.0);
-  EXPECT_NEAR(detail::corner_wall_min_radius(detail::CentrePath(square)) * 16.0, 1.5692, 1e-4);
-  const auto triangle = detail::make_polygon_shape(3, 1.0);
-  EXPECT_EQ(detail::corner_wall_min_radius(detail::CentrePath(triangle)), 0.0);
+  const auto square = polygon_detail::make_polygon_shape(4, 1.0);
+  EXPECT_NEAR(polygon_detail::corner_wall_min_radius(polygon_detail::CentrePath(square)) * 16.0,
+              1.5692, 1e-4);
+  const auto triangle = polygon_detail::make_polygon_shape(3, 1.0);
+  EXPECT_EQ(polygon_detail::corner_wall_min_radius(polygon_detail::CentrePath(triangle)), 0.0);
 }
 
 // P31, odd N: t* is a phase join; the phase that ends there and the one that starts there give
 // the same radius (mirror symmetry), so the value does not hang on floor(t* / delta).
 TEST(RotorDimensions, OddCornerRadiusIsTheSameFromEitherPhaseAtTheJoin) {
   for (int N = 5; N <= 11; N += 2) {
-    const auto shape = detail::make_polygon_shape(N, 1.0);
-    const detail::CentrePath path(shape);
+    const auto shape = polygon_detail::make_polygon_shape(N, 1.0);
+    const polygon_detail::CentrePath path(shape);
     const double theta_1 = -0.5 * kPi + 2.0 * kPi / shape.M;
     const double t_star = 0.5 * (N + 1.0) * shape.delta;
     const auto radius_in_phase = [&](int p) {
       const double theta = t_star - p * shape.delta;
-      const Eigen::Vector2d X1 =
-          path.velocity_in_phase(p, theta) - shape.r * detail::unit(theta_1 - t_star + 0.5 * kPi);
+      const Eigen::Vector2d X1 = path.velocity_in_phase(p, theta) -
+                                 shape.r * polygon_detail::unit(theta_1 - t_star + 0.5 * kPi);
       const Eigen::Vector2d X2 =
-          path.acceleration_in_phase(p, theta) - shape.r * detail::unit(theta_1 - t_star);
+          path.acceleration_in_phase(p, theta) - shape.r * polygon_detail::unit(theta_1 - t_star);
       const double speed = X1.norm();
       return speed * speed * speed / std::abs(X1.x() * X2.y() - X1.y() * X2.x());
     };
     const double ending = radius_in_phase((N + 1) / 2 - 1);
     const double starting = radius_in_phase((N + 1) / 2);
     EXPECT_NEAR(ending, starting, 1e-9) << N;
-    EXPECT_NEAR(detail::corner_wall_min_radius(path), ending, 1e-12) << N;
+    EXPECT_NEAR(polygon_detail::corner_wall_min_radius(path), ending, 1e-12) << N;
   }
 }
 

@@ -21,7 +21,7 @@
 
 namespace {
 
-namespace detail = cutcalc::domain::polygon::detail;
+namespace polygon_detail = cutcalc::domain::polygon::detail;
 using cutcalc::test::polygon::kPi;
 
 // Angle x reduced to [0, 2 pi).
@@ -33,22 +33,24 @@ double wrap(double x) {
 // The support of the rotor boundary in world direction `a` for the pose (centre c, angle phi),
 // as the maximum over its pieces: every corner point, and every flank arc (its circle where `a`
 // is inside its turned normal range, else its end points).
-double support_from_pieces(const detail::Rotor& rotor, const detail::PolygonShape& shape,
-                           const Eigen::Vector2d& c, double phi, double a) {
+double support_from_pieces(const polygon_detail::Rotor& rotor,
+                           const polygon_detail::PolygonShape& shape, const Eigen::Vector2d& c,
+                           double phi, double a) {
   const Eigen::Rotation2Dd turn(phi);
-  const Eigen::Vector2d n = detail::unit(a);
+  const Eigen::Vector2d n = polygon_detail::unit(a);
   double best = -std::numeric_limits<double>::infinity();
   for (int v = 0; v < shape.M; ++v) {
     best = std::max(best, (c + turn * rotor.corner(v)).dot(n));
     for (int m = 1; m <= shape.N - 2; ++m) {
-      const detail::FlankArc arc = rotor.flank_arc(v, m);
+      const polygon_detail::FlankArc arc = rotor.flank_arc(v, m);
       const Eigen::Vector2d O = c + turn * arc.centre;
       const double width = arc.normal_end - arc.normal_begin;
       if (wrap(a - (arc.normal_begin + phi)) <= width) {
         best = std::max(best, O.dot(n) + arc.radius);
       } else {
-        best = std::max(best, (O + arc.radius * detail::unit(arc.normal_begin + phi)).dot(n));
-        best = std::max(best, (O + arc.radius * detail::unit(arc.normal_end + phi)).dot(n));
+        best =
+            std::max(best, (O + arc.radius * polygon_detail::unit(arc.normal_begin + phi)).dot(n));
+        best = std::max(best, (O + arc.radius * polygon_detail::unit(arc.normal_end + phi)).dot(n));
       }
     }
   }
@@ -67,14 +69,14 @@ TEST(RotorShape, FlankRadiiTable) {
   };
   for (int N = 3; N <= 8; ++N) {
     SCOPED_TRACE(N);
-    const detail::Rotor rotor(detail::make_polygon_shape(N, 1.0));
+    const polygon_detail::Rotor rotor(polygon_detail::make_polygon_shape(N, 1.0));
     const std::vector<double>& row = table[static_cast<std::size_t>(N - 3)];
     for (int m = 1; m <= N - 2; ++m) {
       EXPECT_NEAR(rotor.flank_radius(m), row[static_cast<std::size_t>(m - 1)], 5e-7);
     }
   }
   for (int N = 3; N <= 12; ++N) {
-    const detail::Rotor rotor(detail::make_polygon_shape(N, 1.0));
+    const polygon_detail::Rotor rotor(polygon_detail::make_polygon_shape(N, 1.0));
     for (int m = 1; m <= N - 2; ++m) {
       EXPECT_NEAR(rotor.flank_radius(m), rotor.flank_radius(N - 1 - m), 1e-15);  // R_m = R_{N-1-m}
     }
@@ -87,19 +89,20 @@ TEST(RotorShape, BoundaryClosesExactly) {
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
     const double d = 20.0;
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, d);
-    const detail::Rotor rotor(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, d);
+    const polygon_detail::Rotor rotor(shape);
     for (int v = 0; v < shape.M; ++v) {
-      const detail::FlankArc first = rotor.flank_arc(v, 1);
+      const polygon_detail::FlankArc first = rotor.flank_arc(v, 1);
       EXPECT_NEAR(
-          (first.centre + first.radius * detail::unit(first.normal_begin) - rotor.corner(v)).norm(),
+          (first.centre + first.radius * polygon_detail::unit(first.normal_begin) - rotor.corner(v))
+              .norm(),
           0.0, 1e-12 * d);
       for (int m = 1; m + 1 <= N - 2; ++m) {
-        const detail::FlankArc a = rotor.flank_arc(v, m);
-        const detail::FlankArc b = rotor.flank_arc(v, m + 1);
+        const polygon_detail::FlankArc a = rotor.flank_arc(v, m);
+        const polygon_detail::FlankArc b = rotor.flank_arc(v, m + 1);
         EXPECT_NEAR(a.normal_end, b.normal_begin, 1e-15);
-        EXPECT_NEAR((a.centre + a.radius * detail::unit(a.normal_end) -
-                     (b.centre + b.radius * detail::unit(b.normal_begin)))
+        EXPECT_NEAR((a.centre + a.radius * polygon_detail::unit(a.normal_end) -
+                     (b.centre + b.radius * polygon_detail::unit(b.normal_begin)))
                         .norm(),
                     0.0, 1e-12 * d);
       }
@@ -114,8 +117,8 @@ TEST(RotorShape, SupportFunctionMatchesTheBoundaryPieces) {
   std::uniform_real_distribution<double> angle(-10.0, 10.0);
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 20.0);
-    const detail::Rotor rotor(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 20.0);
+    const polygon_detail::Rotor rotor(shape);
     for (int k = 0; k < 400; ++k) {
       const double b = angle(random);
       EXPECT_NEAR(rotor.support(b),
@@ -131,8 +134,8 @@ TEST(RotorShape, WidthsAndSpecialCases) {
   const double d = 20.0;
   for (int N = 3; N <= 12; ++N) {
     SCOPED_TRACE(N);
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, d);
-    const detail::Rotor rotor(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, d);
+    const polygon_detail::Rotor rotor(shape);
     double min_width = std::numeric_limits<double>::infinity();
     double max_width = 0.0;
     for (int k = 0; k < 20000; ++k) {
@@ -158,8 +161,10 @@ TEST(RotorShape, WidthsAndSpecialCases) {
       EXPECT_NEAR(max_width, 20.6114, 1e-4);
     }
   }
-  EXPECT_NEAR(detail::Rotor(detail::make_polygon_shape(4, d)).flank_radius(1), d, 1e-12);
-  EXPECT_NEAR(detail::Rotor(detail::make_polygon_shape(3, d)).flank_radius(1), 1.5 * d, 1e-12);
+  EXPECT_NEAR(polygon_detail::Rotor(polygon_detail::make_polygon_shape(4, d)).flank_radius(1), d,
+              1e-12);
+  EXPECT_NEAR(polygon_detail::Rotor(polygon_detail::make_polygon_shape(3, d)).flank_radius(1),
+              1.5 * d, 1e-12);
 }
 
 // The property of section 2: placed by P6-P7 (centre c(t), angle phi = -t) at any phase, the
@@ -169,9 +174,9 @@ TEST(RotorContact, TouchesAllSidesAtEveryPhase) {
   for (int N = 3; N <= 12; ++N) {
     for (double d : {1.0, 250.0}) {
       SCOPED_TRACE(testing::Message() << "N " << N << " d " << d);
-      const detail::PolygonShape shape = detail::make_polygon_shape(N, d);
-      const detail::CentrePath path(shape);
-      const detail::Rotor rotor(shape);
+      const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, d);
+      const polygon_detail::CentrePath path(shape);
+      const polygon_detail::Rotor rotor(shape);
       const double loop = N * shape.delta;
       std::uniform_real_distribution<double> phase(0.0, 3.0 * loop);
       std::vector<double> instants;
@@ -200,9 +205,9 @@ TEST(RotorContact, TouchesAllSidesAtEveryPhase) {
 // A wrong phase makes the rotor cross a side: the contact property is not vacuous.
 TEST(RotorContact, AWrongPhaseCrossesASide) {
   for (int N = 3; N <= 12; ++N) {
-    const detail::PolygonShape shape = detail::make_polygon_shape(N, 20.0);
-    const detail::CentrePath path(shape);
-    const detail::Rotor rotor(shape);
+    const polygon_detail::PolygonShape shape = polygon_detail::make_polygon_shape(N, 20.0);
+    const polygon_detail::CentrePath path(shape);
+    const polygon_detail::Rotor rotor(shape);
     const double t = 0.3 * shape.delta;
     double crossing = -std::numeric_limits<double>::infinity();
     for (int j = 0; j < N; ++j) {

@@ -27,7 +27,7 @@ using cutcalc::domain::ErrorCode;
 using cutcalc::domain::MillingSense;
 using cutcalc::domain::roughness::BoreMillingParams;
 using cutcalc::domain::roughness::compute_bore_milling_cusp;
-namespace detail = cutcalc::domain::roughness::detail;
+namespace roughness_detail = cutcalc::domain::roughness::detail;
 
 using Real = long double;
 constexpr Real kPiL = std::numbers::pi_v<long double>;
@@ -275,7 +275,7 @@ TEST(BoreMillingBruteForce, OracleReproducesTheWorkedExample) {
 
 // B.4 steps 2-4 as the domain performs them, to feed the root finder directly.
 struct Bracketed {
-  detail::PlanetaryPath path;
+  roughness_detail::PlanetaryPath path;
   double s = 0.0;
   double half_alpha = 0.0;
   double hi = 0.0;
@@ -292,7 +292,7 @@ std::optional<Bracketed> bracket(const BoreMillingParams& p) {
   const double m = p.milling == MillingSense::up ? 1.0 : -1.0;
   const double k = eps / (m - eps);
   const double s = k + r / R > 0.0 ? 1.0 : -1.0;
-  const detail::PlanetaryPath path(Rc, r, k);
+  const roughness_detail::PlanetaryPath path(Rc, r, k);
   return Bracketed{path, s, std::numbers::pi * std::abs(k) / p.teeth, path.monotone_end(s)};
 }
 
@@ -324,7 +324,7 @@ TEST(BoreMillingBruteForce, NewtonAgreesWithBisectionInFewIterations) {
     if (!b) {
       continue;
     }
-    const auto root = detail::find_bisector_crossing(b->path, b->s, b->half_alpha, b->hi);
+    const auto root = roughness_detail::find_bisector_crossing(b->path, b->s, b->half_alpha, b->hi);
     ASSERT_TRUE(root.has_value());
     const double reference = bisection_root(*b);
     EXPECT_NEAR(root->delta, reference, 1e-14 * reference);

@@ -17,6 +17,7 @@
 #include "domain/roughness/bore_milling.h"
 #include "domain/roughness/bore_milling_curve.h"
 #include "domain/roughness/bore_milling_feed.h"
+#include "domain/roughness/roughness_test_support.h"
 
 namespace {
 
@@ -29,13 +30,10 @@ using cutcalc::domain::roughness::BoreMillingParams;
 using cutcalc::domain::roughness::compute_bore_milling_curve;
 using cutcalc::domain::roughness::compute_bore_milling_cusp;
 
-constexpr MillingSense kUp = MillingSense::up;
-constexpr MillingSense kDown = MillingSense::down;
-constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using cutcalc::test::roughness::kDown;
+using cutcalc::test::roughness::kUp;
 
-// Half a unit in the last digit the spec prints, plus rounding slack.
-constexpr double printed(double last_digit) { return 0.5 * last_digit + 1e-15; }
+using cutcalc::test::roughness::bore_printed;
 
 BoreMillingParams setup(double R, double r, int n, MillingSense milling, double S = 0.1) {
   return BoreMillingParams{R, r, n, S, milling};
@@ -53,8 +51,8 @@ constexpr double kRoundingNoise = 1e-13;
 double feed_top_mm(const BoreMillingParams& p) {
   const double Rc = p.bore_radius_mm - p.cutter_radius_mm;
   const double n = p.teeth;
-  return p.milling == kUp ? 2.0 * kPi * Rc * n / (n + 2.0)
-                          : 2.0 * kPi * std::min(Rc, p.cutter_radius_mm);
+  return p.milling == kUp ? 2.0 * std::numbers::pi * Rc * n / (n + 2.0)
+                          : 2.0 * std::numbers::pi * std::min(Rc, p.cutter_radius_mm);
 }
 
 double cusp_um(const BoreMillingParams& params, double S) {
@@ -86,14 +84,14 @@ TEST(BoreMillingFeedLimit, IsTheLastAcceptedFeed) {
     EXPECT_FALSE(bore_milling_feed_accepted(at_feed(params, S_lim * (1.0 + kRoundingNoise))));
   }
   // B.9 example: Table 1 setting, up, S_lim 203.58; R 20, r 8, n 1, up, S_lim 20.54.
-  EXPECT_NEAR(bore_milling_feed_limit_mm(setup(81.0, 32.4, 4, kUp)), 203.58, printed(0.01));
-  EXPECT_NEAR(bore_milling_feed_limit_mm(setup(20.0, 8.0, 1, kUp)), 20.54, printed(0.01));
+  EXPECT_NEAR(bore_milling_feed_limit_mm(setup(81.0, 32.4, 4, kUp)), 203.58, bore_printed(0.01));
+  EXPECT_NEAR(bore_milling_feed_limit_mm(setup(20.0, 8.0, 1, kUp)), 20.54, bore_printed(0.01));
 }
 
 // B9: for n = 2 up-milling the pitch angle limit alpha = 180 deg (S_top = 2 pi Rc n / (n + 2))
 // comes first: S_lim sits just below it.
 TEST(BoreMillingFeedLimit, StopsAtThePitchAngleLimit) {
-  const double S_top = 2.0 * kPi * 12.0 * 0.5;
+  const double S_top = 2.0 * std::numbers::pi * 12.0 * 0.5;
   const double S_lim = bore_milling_feed_limit_mm(setup(20.0, 8.0, 2, kUp));
   EXPECT_LE(S_lim, S_top);
   EXPECT_NEAR(S_lim, S_top, 1e-13 * S_top);
@@ -111,11 +109,11 @@ TEST(BoreMillingFeedLimit, IgnoresTheFeed) {
 TEST(BoreMillingMaxFeed, SpecExamples) {
   const BoreMillingParams table1 = setup(81.0, 32.4, 4, kUp, 0.2);
   const double S1 = max_feed(table1, 0.05);
-  EXPECT_NEAR(S1, 0.353339, printed(1e-6));
+  EXPECT_NEAR(S1, 0.353339, bore_printed(1e-6));
   EXPECT_NEAR(cusp_um(table1, S1), 0.05, 1e-12 * 0.05);
   const BoreMillingParams small = setup(20.0, 8.0, 1, kUp, 2.0);
   const double S2 = max_feed(small, 1.0);
-  EXPECT_NEAR(S2, 0.196725, printed(1e-6));
+  EXPECT_NEAR(S2, 0.196725, bore_printed(1e-6));
   EXPECT_NEAR(cusp_um(small, S2), 1.0, 1e-12);
 }
 
@@ -127,7 +125,7 @@ TEST(BoreMillingMaxFeed, IsTheLastFeedWithinTheTarget) {
       const double S = max_feed(params, T);
       SCOPED_TRACE(testing::Message() << "T " << T << " S " << S);
       EXPECT_LE(cusp_um(params, S), T);
-      EXPECT_GT(cusp_um(params, std::nextafter(S, kInf)), T);
+      EXPECT_GT(cusp_um(params, std::nextafter(S, std::numeric_limits<double>::infinity())), T);
     }
   }
 }
@@ -208,8 +206,8 @@ TEST(BoreMillingFeedLimit, AcceptedFeedsFormOneIntervalOnWhichTheCuspRises) {
     const MillingSense milling = trial % 2 == 0 ? kUp : kDown;
     const BoreMillingParams params = setup(R, r, n, milling);
     const double S_lim = bore_milling_feed_limit_mm(params);
-    const double S_top =
-        milling == kUp ? 2.0 * kPi * (R - r) * n / (n + 2.0) : 2.0 * kPi * std::min(R - r, r);
+    const double S_top = milling == kUp ? 2.0 * std::numbers::pi * (R - r) * n / (n + 2.0)
+                                        : 2.0 * std::numbers::pi * std::min(R - r, r);
     SCOPED_TRACE(testing::Message() << "R " << R << " r " << r << " n " << n << " S_lim " << S_lim);
     double previous = 0.0;
     for (int i = 1; i <= 100; ++i) {

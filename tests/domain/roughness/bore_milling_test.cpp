@@ -12,6 +12,7 @@
 #include "domain/common/milling_sense.h"
 #include "domain/common/result.h"
 #include "domain/roughness/bore_milling.h"
+#include "domain/roughness/roughness_test_support.h"
 
 namespace {
 
@@ -21,11 +22,10 @@ using cutcalc::domain::roughness::BoreMillingParams;
 using cutcalc::domain::roughness::BoreMillingResult;
 using cutcalc::domain::roughness::compute_bore_milling_cusp;
 
-constexpr MillingSense kUp = MillingSense::up;
-constexpr MillingSense kDown = MillingSense::down;
+using cutcalc::test::roughness::kDown;
+using cutcalc::test::roughness::kUp;
 
-// Half a unit in the last digit the spec prints, plus rounding slack.
-constexpr double printed(double last_digit) { return 0.5 * last_digit + 1e-15; }
+using cutcalc::test::roughness::bore_printed;
 
 BoreMillingResult cusp(double R, double r, int n, double S, MillingSense milling) {
   const auto result = compute_bore_milling_cusp(BoreMillingParams{R, r, n, S, milling});
@@ -60,18 +60,18 @@ TEST(BoreMillingWorkedExample, PaperTableOneSetting) {
   EXPECT_NEAR(R / r, 2.5, 1e-15);
   const double Rc = R - r;
   EXPECT_NEAR(Rc, 48.6, 1e-12);
-  EXPECT_NEAR(0.2 / (2.0 * std::numbers::pi * Rc), 6.55e-4, printed(1e-6));  // eps (B1)
+  EXPECT_NEAR(0.2 / (2.0 * std::numbers::pi * Rc), 6.55e-4, bore_printed(1e-6));  // eps (B1)
 
   const BoreMillingResult up = cusp(R, r, 4, 0.2, kUp);
   EXPECT_NEAR(up.feed_per_tooth_mm, 0.05, 1e-15);
-  EXPECT_NEAR(up.feed_per_tooth_on_bore_mm, 0.083333, printed(1e-6));
-  EXPECT_NEAR(up.pitch_angle_deg, 0.058985, printed(1e-6));
-  EXPECT_NEAR(up.cusp_height_um, 0.0160436, printed(1e-7));
-  EXPECT_NEAR(up.approximate_cusp_height_um, 0.0160751, printed(1e-7));
-  EXPECT_NEAR(up.approximate_cusp_height_um / up.cusp_height_um - 1.0, 0.0020, printed(1e-4));
+  EXPECT_NEAR(up.feed_per_tooth_on_bore_mm, 0.083333, bore_printed(1e-6));
+  EXPECT_NEAR(up.pitch_angle_deg, 0.058985, bore_printed(1e-6));
+  EXPECT_NEAR(up.cusp_height_um, 0.0160436, bore_printed(1e-7));
+  EXPECT_NEAR(up.approximate_cusp_height_um, 0.0160751, bore_printed(1e-7));
+  EXPECT_NEAR(up.approximate_cusp_height_um / up.cusp_height_um - 1.0, 0.0020, bore_printed(1e-4));
 
   const BoreMillingResult down = cusp(R, r, 4, 0.2, kDown);
-  EXPECT_NEAR(down.cusp_height_um, 0.0161067, printed(1e-7));
+  EXPECT_NEAR(down.cusp_height_um, 0.0161067, bore_printed(1e-7));
   EXPECT_EQ(down.approximate_cusp_height_um, up.approximate_cusp_height_um);
   EXPECT_EQ(down.feed_per_tooth_mm, up.feed_per_tooth_mm);
   EXPECT_EQ(down.feed_per_tooth_on_bore_mm, up.feed_per_tooth_on_bore_mm);
@@ -82,13 +82,13 @@ TEST(BoreMillingWorkedExample, PaperTableOneSetting) {
 // B.6: a small bore with a large feed, where the approximation is far off.
 TEST(BoreMillingWorkedExample, SmallBoreLargeFeed) {
   const BoreMillingResult up = cusp(20.0, 8.0, 1, 2.0, kUp);
-  EXPECT_NEAR(up.cusp_height_um, 96.402, printed(1e-3));
-  EXPECT_NEAR(up.approximate_cusp_height_um, 104.167, printed(1e-3));
-  EXPECT_NEAR(cusp(20.0, 8.0, 1, 2.0, kDown).cusp_height_um, 113.083, printed(1e-3));
+  EXPECT_NEAR(up.cusp_height_um, 96.402, bore_printed(1e-3));
+  EXPECT_NEAR(up.approximate_cusp_height_um, 104.167, bore_printed(1e-3));
+  EXPECT_NEAR(cusp(20.0, 8.0, 1, 2.0, kDown).cusp_height_um, 113.083, bore_printed(1e-3));
 
   const BoreMillingResult large = cusp(20.0, 8.0, 1, 5.0, kUp);
-  EXPECT_NEAR(large.cusp_height_um, 539.96, printed(1e-2));
-  EXPECT_NEAR(large.approximate_cusp_height_um, 651.04, printed(1e-2));
+  EXPECT_NEAR(large.cusp_height_um, 539.96, bore_printed(1e-2));
+  EXPECT_NEAR(large.approximate_cusp_height_um, 651.04, bore_printed(1e-2));
 }
 
 // B2, B3, B8 in closed form for a setting the spec does not print.
@@ -120,8 +120,8 @@ TEST(BoreMillingErrata, TableOneFeedsOnTheCentrePath) {
   const double n1[] = {2.57e-4, 1.02e-3, 2.30e-3};
   const double feeds[] = {0.2, 0.4, 0.6};
   for (int i = 0; i < 3; ++i) {
-    EXPECT_NEAR(cusp_mm(R, r, 4, feeds[i]), n4[i], printed(0.01 * n4[i]));
-    EXPECT_NEAR(cusp_mm(R, r, 1, feeds[i]), n1[i], printed(0.01 * n1[i]));
+    EXPECT_NEAR(cusp_mm(R, r, 4, feeds[i]), n4[i], bore_printed(0.01 * n4[i]));
+    EXPECT_NEAR(cusp_mm(R, r, 1, feeds[i]), n1[i], bore_printed(0.01 * n1[i]));
   }
   for (const int n : {1, 4}) {
     const double ratio = cusp_mm(R, r, n, 0.4) / cusp_mm(R, r, n, 0.2);
@@ -138,8 +138,8 @@ TEST(BoreMillingErrata, TableOneFeedsMeasuredOnTheBore) {
   const double n1[] = {9.25e-5, 3.69e-4, 8.30e-4};
   const double feeds[] = {0.2, 0.4, 0.6};
   for (int i = 0; i < 3; ++i) {
-    EXPECT_NEAR(cusp_mm(R, r, 4, feeds[i] * to_centre), n4[i], printed(0.01 * n4[i]));
-    EXPECT_NEAR(cusp_mm(R, r, 1, feeds[i] * to_centre), n1[i], printed(0.01 * n1[i]));
+    EXPECT_NEAR(cusp_mm(R, r, 4, feeds[i] * to_centre), n4[i], bore_printed(0.01 * n4[i]));
+    EXPECT_NEAR(cusp_mm(R, r, 1, feeds[i] * to_centre), n1[i], bore_printed(0.01 * n1[i]));
   }
   EXPECT_NEAR(cusp(R, r, 4, 0.2 * to_centre, kUp).feed_per_tooth_on_bore_mm, 0.05, 1e-15);
 }
@@ -148,9 +148,9 @@ TEST(BoreMillingErrata, TableOneFeedsMeasuredOnTheBore) {
 TEST(BoreMillingErrata, TableThreeTeeth) {
   const double R = 81.0;
   const double r = 32.4;
-  EXPECT_NEAR(cusp_mm(R, r, 4, 0.2), 1.60e-5, printed(1e-7));
-  EXPECT_NEAR(cusp_mm(R, r, 2, 0.2), 6.42e-5, printed(1e-7));
-  EXPECT_NEAR(cusp_mm(R, r, 1, 0.2), 2.57e-4, printed(1e-6));
+  EXPECT_NEAR(cusp_mm(R, r, 4, 0.2), 1.60e-5, bore_printed(1e-7));
+  EXPECT_NEAR(cusp_mm(R, r, 2, 0.2), 6.42e-5, bore_printed(1e-7));
+  EXPECT_NEAR(cusp_mm(R, r, 1, 0.2), 2.57e-4, bore_printed(1e-6));
   const double ratio = cusp_mm(R, r, 1, 0.2) / cusp_mm(R, r, 4, 0.2);
   EXPECT_NEAR(ratio, 16.0, 0.05);
 }
@@ -162,7 +162,7 @@ TEST(BoreMillingErrata, TableTwoRadiusRatios) {
   double previous = 0.0;
   for (int i = 0; i < 4; ++i) {
     const double value = cusp_mm(81.0, 81.0 / ratios[i], 4, 0.2);
-    EXPECT_NEAR(value, expected[i], printed(1e-8)) << "R/r " << ratios[i];
+    EXPECT_NEAR(value, expected[i], bore_printed(1e-8)) << "R/r " << ratios[i];
     EXPECT_GT(value, previous);
     previous = value;
   }

@@ -16,7 +16,7 @@ namespace {
 
 using cutcalc::domain::roughness::compute_groove_wall_roughness;
 using cutcalc::domain::roughness::GrooveWallParams;
-namespace detail = cutcalc::domain::roughness::detail;
+namespace roughness_detail = cutcalc::domain::roughness::detail;
 
 using cutcalc::domain::kRadPerDeg;
 
@@ -46,7 +46,8 @@ std::vector<double> feed_grid(double rho, double phi1_deg) {
     feeds.push_back(1e-4 * std::pow(5e5, static_cast<double>(i) / steps));
   }
   if (phi1_deg > 0.0) {
-    const auto limits = detail::branch_limits(rho, detail::minor_edge_angle(phi1_deg * kRadPerDeg));
+    const auto limits = roughness_detail::branch_limits(
+        rho, roughness_detail::minor_edge_angle(phi1_deg * kRadPerDeg));
     for (const double S_limit : {limits.S_AB, limits.S_BC}) {
       for (int j = -3; j <= 3; ++j) {
         feeds.push_back(S_limit * (1.0 + 1e-9 * j));

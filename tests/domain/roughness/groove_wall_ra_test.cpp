@@ -19,6 +19,7 @@
 #include "domain/roughness/groove_wall.h"
 #include "domain/roughness/groove_wall_bearing.h"
 #include "domain/roughness/pitch_profile.h"
+#include "domain/roughness/roughness_test_support.h"
 
 namespace {
 
@@ -28,10 +29,9 @@ using cutcalc::domain::roughness::compute_groove_wall_bearing_curve;
 using cutcalc::domain::roughness::compute_groove_wall_roughness;
 using cutcalc::domain::roughness::CrestBranch;
 using cutcalc::domain::roughness::GrooveWallParams;
-namespace detail = cutcalc::domain::roughness::detail;
+namespace roughness_detail = cutcalc::domain::roughness::detail;
 
-// Half a unit in the last digit the spec prints, plus rounding slack.
-constexpr double printed(double last_digit) { return 0.5 * last_digit + 1e-12; }
+using cutcalc::test::roughness::wall_printed;
 
 double ra_um(double S, double rho, double phi1_deg) {
   const auto result = compute_groove_wall_roughness(GrooveWallParams{S, rho, phi1_deg, {}});
@@ -45,22 +45,15 @@ std::vector<BearingPoint> bearing(double S, double rho, double phi1_deg, int n) 
   return result.ok() ? result.value() : std::vector<BearingPoint>{};
 }
 
-detail::PitchProfile profile(double S, double rho, double phi1_deg) {
-  return detail::pitch_profile(S, rho, detail::minor_edge_angle(phi1_deg * kRadPerDeg));
+roughness_detail::PitchProfile profile(double S, double rho, double phi1_deg) {
+  return roughness_detail::pitch_profile(S, rho,
+                                         roughness_detail::minor_edge_angle(phi1_deg * kRadPerDeg));
 }
 
 // Independent oracle (R.3, R9): the tool's upper boundary with its corner at x = 0, the wall as
 // the upper envelope of the previous (corner at 0) and current (corner at S) positions, the
 // profile y = rho - wall sampled at the midpoints of `samples` cells. No formula of R9-R13 is used.
-long double tool_boundary(long double x, long double rho, long double phi1) {
-  if (x > rho) {
-    return -std::numeric_limits<long double>::infinity();  // beyond the main edge: no tool
-  }
-  if (x >= -rho * std::sin(phi1)) {
-    return std::sqrt(std::max(rho * rho - x * x, 0.0L));  // nose arc
-  }
-  return x * std::tan(phi1) + rho / std::cos(phi1);  // minor edge, tangent to the arc
-}
+using cutcalc::test::roughness::tool_boundary;
 
 std::vector<double> sampled_profile(double S, double rho, double phi1_deg, int samples) {
   const long double phi1 = phi1_deg * kRadPerDeg;
@@ -130,10 +123,10 @@ TEST(GrooveWallRa, NoseArcAreaIsTheIntegralOfTheArcHeight) {
     const double want = static_cast<double>(sum * h / 3.0L);
     // Simpson is exact to ~1e-12 relative here except at a = rho, where the slope is infinite.
     const double tolerance = a == rho ? 1e-6 * want : 1e-10 * want;
-    EXPECT_NEAR(detail::nose_arc_area(a, rho), want, tolerance) << "a " << a;
+    EXPECT_NEAR(roughness_detail::nose_arc_area(a, rho), want, tolerance) << "a " << a;
   }
   // The series branch keeps the relative accuracy of u^3 / (6 rho) for a tiny a.
-  EXPECT_NEAR(detail::nose_arc_area(1e-6, 0.3), 1e-18 / 1.8, 1e-9 * 1e-18 / 1.8);
+  EXPECT_NEAR(roughness_detail::nose_arc_area(1e-6, 0.3), 1e-18 / 1.8, 1e-9 * 1e-18 / 1.8);
 }
 
 // R10 against the mean of the sampled profile, in all three branches.
@@ -141,7 +134,8 @@ TEST(GrooveWallRa, MeanLineIsTheMeanOfTheSampledProfile) {
   for (const Geometry& g : random_geometries(20)) {
     const auto y = sampled_profile(g.S, g.rho, g.phi1_deg, kSamples);
     const double want = sampled_mean(y);
-    EXPECT_NEAR(detail::mean_line_height(profile(g.S, g.rho, g.phi1_deg)), want, 3e-5 * want)
+    EXPECT_NEAR(roughness_detail::mean_line_height(profile(g.S, g.rho, g.phi1_deg)), want,
+                3e-5 * want)
         << "S " << g.S << " rho " << g.rho << " phi1 " << g.phi1_deg;
   }
 }
@@ -162,8 +156,8 @@ TEST(GrooveWallRa, RaIsTheMeanDeviationOfTheSampledProfile) {
 
 // The facts of R.7: paper geometry rho 0.3, phi1 2 deg.
 TEST(GrooveWallRa, ReproducesThePrintedValues) {
-  EXPECT_NEAR(ra_um(0.12, 0.3, 2.0), 0.70803, printed(1e-5));
-  EXPECT_NEAR(ra_um(0.48, 0.3, 2.0), 3.51635, printed(1e-5));
+  EXPECT_NEAR(ra_um(0.12, 0.3, 2.0), 0.70803, wall_printed(1e-5));
+  EXPECT_NEAR(ra_um(0.48, 0.3, 2.0), 3.51635, wall_printed(1e-5));
 }
 
 // A parabolic cusp: Rz / Ra -> 9 sqrt(3) / 4 as the pitch shrinks (branch A).
@@ -203,11 +197,11 @@ TEST(GrooveWallRa, RaScalesWithTheGeometryWithoutOverflow) {
 TEST(GrooveWallBearing, MaterialRatioIsTheSampledFraction) {
   for (const Geometry& g : random_geometries(30)) {
     const auto y = sampled_profile(g.S, g.rho, g.phi1_deg, kSamples);
-    const detail::PitchProfile p = profile(g.S, g.rho, g.phi1_deg);
+    const roughness_detail::PitchProfile p = profile(g.S, g.rho, g.phi1_deg);
     for (const double fraction : {0.0, 0.1, 0.37, 0.5, 0.81, 0.99, 1.0, 1.5}) {
       const double c = fraction * p.Rz;
       const double want = fraction >= 1.0 ? 1.0 : sampled_material_ratio(y, p.Rz - c);
-      EXPECT_NEAR(detail::material_ratio(p, c), want, 3.0 / kSamples)
+      EXPECT_NEAR(roughness_detail::material_ratio(p, c), want, 3.0 / kSamples)
           << "S " << g.S << " rho " << g.rho << " phi1 " << g.phi1_deg << " c/Rz " << fraction;
     }
   }

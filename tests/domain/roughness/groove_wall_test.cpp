@@ -13,6 +13,7 @@
 #include "domain/common/result.h"
 #include "domain/roughness/crest_branches.h"
 #include "domain/roughness/groove_wall.h"
+#include "domain/roughness/roughness_test_support.h"
 
 namespace {
 
@@ -21,12 +22,11 @@ using cutcalc::domain::roughness::compute_groove_wall_roughness;
 using cutcalc::domain::roughness::CrestBranch;
 using cutcalc::domain::roughness::GrooveWallParams;
 using cutcalc::domain::roughness::GrooveWallResult;
-namespace detail = cutcalc::domain::roughness::detail;
+namespace roughness_detail = cutcalc::domain::roughness::detail;
 
 using cutcalc::domain::kRadPerDeg;
 
-// Half a unit in the last digit the spec prints, plus rounding slack.
-constexpr double printed(double last_digit) { return 0.5 * last_digit + 1e-12; }
+using cutcalc::test::roughness::wall_printed;
 
 GrooveWallResult groove(double S, double rho, double phi1_deg) {
   const auto result = compute_groove_wall_roughness(GrooveWallParams{S, rho, phi1_deg, {}});
@@ -48,15 +48,7 @@ double paper_eq6_um(double S, double rho, double phi1_deg) {
 // Independent oracle (R.3): the tool's upper boundary, the wall as the upper envelope of the
 // previous (x + S) and current boundaries, the crest where they cross, found by bisection in long
 // double. No branch formula is used.
-long double tool_boundary(long double x, long double rho, long double phi1) {
-  if (x > rho) {
-    return -std::numeric_limits<long double>::infinity();  // beyond the main edge: no tool
-  }
-  if (x >= -rho * std::sin(phi1)) {
-    return std::sqrt(std::max(rho * rho - x * x, 0.0L));  // nose arc
-  }
-  return x * std::tan(phi1) + rho / std::cos(phi1);  // minor edge, tangent to the arc
-}
+using cutcalc::test::roughness::tool_boundary;
 
 double oracle_rz_um(double S_in, double rho_in, double phi1_deg) {
   const long double S = S_in;
@@ -85,28 +77,28 @@ double oracle_rz_um(double S_in, double rho_in, double phi1_deg) {
 // R.5, phi1 = 2 deg: branch limits, Fig. 5 feeds, the "v razvod" pitch and the target.
 TEST(GrooveWallWorkedExample, PaperGeometryMinorEdgeTwoDegrees) {
   const double rho = 0.3;
-  const auto phi1 = detail::minor_edge_angle(2.0 * kRadPerDeg);
-  const auto limits = detail::branch_limits(rho, phi1);
-  EXPECT_NEAR(limits.S_AB, 0.020940, printed(1e-6));
-  EXPECT_NEAR(limits.S_BC, 8.8961, printed(1e-4));
-  EXPECT_NEAR(2.0 * rho / phi1.sin_phi1, 17.192, printed(1e-3));  // end of eq. (6)'s domain
+  const auto phi1 = roughness_detail::minor_edge_angle(2.0 * kRadPerDeg);
+  const auto limits = roughness_detail::branch_limits(rho, phi1);
+  EXPECT_NEAR(limits.S_AB, 0.020940, wall_printed(1e-6));
+  EXPECT_NEAR(limits.S_BC, 8.8961, wall_printed(1e-4));
+  EXPECT_NEAR(2.0 * rho / phi1.sin_phi1, 17.192, wall_printed(1e-3));  // end of eq. (6)'s domain
 
   const double feeds[] = {0.08, 0.12, 0.16, 0.20};
   const double expected_um[] = {1.5479, 2.6248, 3.7526, 4.9131};
   for (int i = 0; i < 4; ++i) {
     const GrooveWallResult r = groove(feeds[i], rho, 2.0);
-    EXPECT_NEAR(r.rz_um, expected_um[i], printed(1e-4)) << "S " << feeds[i];
+    EXPECT_NEAR(r.rz_um, expected_um[i], wall_printed(1e-4)) << "S " << feeds[i];
     EXPECT_EQ(r.branch, CrestBranch::nose_arc_and_minor_edge) << "S " << feeds[i];
     EXPECT_FALSE(r.max_feed_mm.has_value());
   }
-  EXPECT_NEAR(rz_um(0.48, rho, 2.0), 13.4746, printed(1e-4));  // pitch 4 S0, S0 = 0.12
+  EXPECT_NEAR(rz_um(0.48, rho, 2.0), 13.4746, wall_printed(1e-4));  // pitch 4 S0, S0 = 0.12
 
   const auto with_target = compute_groove_wall_roughness(GrooveWallParams{0.12, rho, 2.0, 13.2});
   ASSERT_TRUE(with_target.ok());
-  EXPECT_NEAR(with_target.value().rz_um, 2.6248, printed(1e-4));
+  EXPECT_NEAR(with_target.value().rz_um, 2.6248, wall_printed(1e-4));
   EXPECT_EQ(with_target.value().branch, CrestBranch::nose_arc_and_minor_edge);
   ASSERT_TRUE(with_target.value().max_feed_mm.has_value());
-  EXPECT_NEAR(*with_target.value().max_feed_mm, 0.471245, printed(1e-6));
+  EXPECT_NEAR(*with_target.value().max_feed_mm, 0.471245, wall_printed(1e-6));
 }
 
 // R.5, phi1 = 30 deg: the same feeds lie in branch A (two nose arcs).
@@ -115,36 +107,36 @@ TEST(GrooveWallWorkedExample, PaperGeometryMinorEdgeThirtyDegrees) {
   const double expected_um[] = {2.6786, 6.0612, 10.8634, 17.1573};
   for (int i = 0; i < 4; ++i) {
     const GrooveWallResult r = groove(feeds[i], 0.3, 30.0);
-    EXPECT_NEAR(r.rz_um, expected_um[i], printed(1e-4)) << "S " << feeds[i];
+    EXPECT_NEAR(r.rz_um, expected_um[i], wall_printed(1e-4)) << "S " << feeds[i];
     EXPECT_EQ(r.branch, CrestBranch::nose_arc) << "S " << feeds[i];
   }
 }
 
 // R-E1: eq. (6) below S_AB is wrong; the crest lies between two nose arcs (R3).
 TEST(GrooveWallErrata, PaperEquationSixBelowNoseArcLimit) {
-  EXPECT_NEAR(paper_eq6_um(0.08, 0.3, 30.0), 0.000247, printed(1e-6));
-  EXPECT_NEAR(rz_um(0.08, 0.3, 30.0), 2.6786, printed(1e-4));
+  EXPECT_NEAR(paper_eq6_um(0.08, 0.3, 30.0), 0.000247, wall_printed(1e-6));
+  EXPECT_NEAR(rz_um(0.08, 0.3, 30.0), 2.6786, wall_printed(1e-4));
   EXPECT_EQ(groove(0.08, 0.3, 30.0).branch, CrestBranch::nose_arc);
 
-  EXPECT_NEAR(paper_eq6_um(0.08, 0.3, 10.0), 2.5696, printed(1e-4));
-  EXPECT_NEAR(rz_um(0.08, 0.3, 10.0), 2.6786, printed(1e-4));
+  EXPECT_NEAR(paper_eq6_um(0.08, 0.3, 10.0), 2.5696, wall_printed(1e-4));
+  EXPECT_NEAR(rz_um(0.08, 0.3, 10.0), 2.6786, wall_printed(1e-4));
   EXPECT_EQ(groove(0.08, 0.3, 10.0).branch, CrestBranch::nose_arc);
 
-  EXPECT_NEAR(paper_eq6_um(0.05, 0.4, 45.0), 25.894, printed(1e-3));
-  EXPECT_NEAR(rz_um(0.05, 0.4, 45.0), 0.7820, printed(1e-4));
+  EXPECT_NEAR(paper_eq6_um(0.05, 0.4, 45.0), 25.894, wall_printed(1e-3));
+  EXPECT_NEAR(rz_um(0.05, 0.4, 45.0), 0.7820, wall_printed(1e-4));
   EXPECT_EQ(groove(0.05, 0.4, 45.0).branch, CrestBranch::nose_arc);
 }
 
 // R-E2: above S_BC the crest is on the main edge (R5); eq. (6) is off, then undefined.
 TEST(GrooveWallErrata, PaperEquationSixAboveMainEdgeLimit) {
-  EXPECT_NEAR(paper_eq6_um(10.0, 0.3, 2.0), 338.636, printed(1e-3));
+  EXPECT_NEAR(paper_eq6_um(10.0, 0.3, 2.0), 338.636, wall_printed(1e-3));
   const GrooveWallResult at10 = groove(10.0, 0.3, 2.0);
-  EXPECT_NEAR(at10.rz_um, 338.549, printed(1e-3));
+  EXPECT_NEAR(at10.rz_um, 338.549, wall_printed(1e-3));
   EXPECT_EQ(at10.branch, CrestBranch::minor_edge_and_main_edge);
 
   EXPECT_TRUE(std::isnan(paper_eq6_um(20.0, 0.3, 2.0)));
   const GrooveWallResult at20 = groove(20.0, 0.3, 2.0);
-  EXPECT_NEAR(at20.rz_um, 687.756, printed(1e-3));
+  EXPECT_NEAR(at20.rz_um, 687.756, wall_printed(1e-3));
   EXPECT_EQ(at20.branch, CrestBranch::minor_edge_and_main_edge);
 }
 
@@ -158,7 +150,7 @@ TEST(GrooveWallErrata, SchemeOneAIsEquationSixWithFourTimesTheFeed) {
                 4.0 * std::sin(phi1) *
                     (S0 * std::cos(phi1) -
                      std::sqrt(S0 * std::sin(phi1) * (rho / 2.0 - S0 * std::sin(phi1)))));
-  EXPECT_NEAR(eq5_um, 13.4746, printed(1e-4));
+  EXPECT_NEAR(eq5_um, 13.4746, wall_printed(1e-4));
   EXPECT_NEAR(rz_um(4.0 * S0, rho, 2.0), eq5_um, 1e-9 * eq5_um);
 }
 
@@ -177,8 +169,8 @@ double right_slope(const F& f, double x, double h) {
 TEST(GrooveWallBranches, LimitValuesBelongToTheLowerBranch) {
   for (const double phi1_deg : {0.5, 2.0, 10.0, 30.0, 45.0, 60.0, 80.0, 89.0}) {
     for (const double rho : {0.1, 0.3, 1.2}) {
-      const auto limits =
-          detail::branch_limits(rho, detail::minor_edge_angle(phi1_deg * kRadPerDeg));
+      const auto limits = roughness_detail::branch_limits(
+          rho, roughness_detail::minor_edge_angle(phi1_deg * kRadPerDeg));
       const double inf = std::numeric_limits<double>::infinity();
       EXPECT_EQ(groove(limits.S_AB, rho, phi1_deg).branch, CrestBranch::nose_arc);
       EXPECT_EQ(groove(std::nextafter(limits.S_AB, inf), rho, phi1_deg).branch,
@@ -198,24 +190,27 @@ TEST(GrooveWallBranches, ContinuousWithContinuousSlopeAtTheLimits) {
   for (const double phi1_deg : {0.01, 0.5, 2.0, 10.0, 30.0, 45.0, 60.0, 80.0, 89.0, 89.9}) {
     for (const double rho : {0.1, 0.3, 0.8, 1.2}) {
       const double phi1_rad = phi1_deg * kRadPerDeg;
-      const auto phi1 = detail::minor_edge_angle(phi1_rad);
-      const auto limits = detail::branch_limits(rho, phi1);
+      const auto phi1 = roughness_detail::minor_edge_angle(phi1_rad);
+      const auto limits = roughness_detail::branch_limits(rho, phi1);
       const double at_AB = rho * (1.0 - std::cos(phi1_rad));  // rounding of 1 - cos is ~1e-16
       const double tol_AB = 1e-12 * at_AB + 2e-16 * rho;
-      EXPECT_NEAR(detail::crest_height_nose_arc(limits.S_AB, rho), at_AB, tol_AB);
-      EXPECT_NEAR(detail::crest_height_nose_arc_and_minor_edge(limits.S_AB, rho, phi1, limits),
-                  at_AB, tol_AB);
-      EXPECT_NEAR(detail::crest_height_nose_arc_and_minor_edge(limits.S_BC, rho, phi1, limits), rho,
-                  1e-12 * rho);
-      EXPECT_NEAR(detail::crest_height_minor_edge_and_main_edge(limits.S_BC, rho, phi1, limits),
-                  rho, 1e-12 * rho);
+      EXPECT_NEAR(roughness_detail::crest_height_nose_arc(limits.S_AB, rho), at_AB, tol_AB);
+      EXPECT_NEAR(
+          roughness_detail::crest_height_nose_arc_and_minor_edge(limits.S_AB, rho, phi1, limits),
+          at_AB, tol_AB);
+      EXPECT_NEAR(
+          roughness_detail::crest_height_nose_arc_and_minor_edge(limits.S_BC, rho, phi1, limits),
+          rho, 1e-12 * rho);
+      EXPECT_NEAR(
+          roughness_detail::crest_height_minor_edge_and_main_edge(limits.S_BC, rho, phi1, limits),
+          rho, 1e-12 * rho);
 
       // Second-order one-sided difference quotients of the neighbouring branches at each limit,
       // with steps well inside the distance rho cos^2(phi1) to the singular S = 2 rho.
       const double h = 1e-5 * std::min(limits.S_AB, rho * phi1.cos_phi1 * phi1.cos_phi1);
-      const auto A = [&](double S) { return detail::crest_height_nose_arc(S, rho); };
+      const auto A = [&](double S) { return roughness_detail::crest_height_nose_arc(S, rho); };
       const auto B = [&](double S) {
-        return detail::crest_height_nose_arc_and_minor_edge(S, rho, phi1, limits);
+        return roughness_detail::crest_height_nose_arc_and_minor_edge(S, rho, phi1, limits);
       };
       const double slope_A = left_slope(A, limits.S_AB, h);
       const double slope_B_at_AB = right_slope(B, limits.S_AB, h);
@@ -232,8 +227,8 @@ TEST(GrooveWallBranches, ContinuousWithContinuousSlopeAtTheLimits) {
 TEST(GrooveWallBranches, PublicValueContinuousAcrossTheLimits) {
   for (const double phi1_deg : {0.5, 2.0, 30.0, 60.0, 89.0}) {
     const double rho = 0.3;
-    const auto phi1 = detail::minor_edge_angle(phi1_deg * kRadPerDeg);
-    const auto limits = detail::branch_limits(rho, phi1);
+    const auto phi1 = roughness_detail::minor_edge_angle(phi1_deg * kRadPerDeg);
+    const auto limits = roughness_detail::branch_limits(rho, phi1);
     for (const double S_limit : {limits.S_AB, limits.S_BC}) {
       const double below = rz_um(S_limit * (1.0 - 1e-12), rho, phi1_deg);
       const double above = rz_um(S_limit * (1.0 + 1e-12), rho, phi1_deg);
@@ -326,9 +321,9 @@ TEST(GrooveWallOracle, MatchesTheIntersectionOfTheToolOutlines) {
 
 // The oracle itself reproduces the printed numbers, so it is not trivially wrong.
 TEST(GrooveWallOracle, ReproducesTheWorkedExample) {
-  EXPECT_NEAR(oracle_rz_um(0.12, 0.3, 2.0), 2.6248, printed(1e-4));
-  EXPECT_NEAR(oracle_rz_um(0.12, 0.3, 30.0), 6.0612, printed(1e-4));
-  EXPECT_NEAR(oracle_rz_um(10.0, 0.3, 2.0), 338.549, printed(1e-3));
+  EXPECT_NEAR(oracle_rz_um(0.12, 0.3, 2.0), 2.6248, wall_printed(1e-4));
+  EXPECT_NEAR(oracle_rz_um(0.12, 0.3, 30.0), 6.0612, wall_printed(1e-4));
+  EXPECT_NEAR(oracle_rz_um(10.0, 0.3, 2.0), 338.549, wall_printed(1e-3));
 }
 
 }  // namespace
