@@ -7,6 +7,7 @@
 
 #include "api/accept_header.h"
 #include "api/json_body.h"
+#include "api/streamed_json.h"
 
 namespace cutcalc::api {
 
@@ -23,6 +24,36 @@ bool all_numbers_finite(const nlohmann::json& value) {
   }
   return true;
 }
+
+void write_whole(JsonWithText& answer) {
+  if (!answer.text_source) return;
+  answer.text.clear();
+  domain::write_all(*answer.text_source, answer.text);
+  std::string program;
+  domain::write_all(*answer.program_source, program);
+  answer.json["program"] = std::move(program);
+  answer.text_source.reset();
+  answer.program_source.reset();
+}
+
+void write_whole(ApiResponse& response) {
+  if (!response.body_source) return;
+  domain::write_all(*response.body_source, response.body);
+  response.body_source.reset();
+}
+
+namespace {
+
+// A number that is not finite reached an answer: a bug, answered 500 and logged with the request.
+ApiResponse non_finite(const ApiRequest& request) {
+  spdlog::error("non-finite number in the response of {} (request {}): {}", request.path,
+                request.request_id, std::string(request.body.substr(0, 4096)));
+  return problem_response(
+      Problem{ProblemKind::internal_error, Message{ErrorCode::internal_error}, {}},
+      std::string(request.path), std::string(request.request_id), request.language);
+}
+
+}  // namespace
 
 ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
   const std::string instance(request.path);
@@ -50,7 +81,17 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
           "text/plain; charset=us-ascii",
           std::move(document->text),
           {{"Content-Disposition", "attachment; filename=\"" + document->file_name + "\""},
-           {"Vary", "Accept"}}};
+           {"Vary", "Accept"}},
+          std::move(document->text_source)};
+    }
+    if (document->program_source) {
+      if (!all_numbers_finite(document->json)) return non_finite(request);
+      return ApiResponse{200,
+                         "application/json",
+                         {},
+                         {{"Vary", "Accept"}},
+                         json_with_streamed_string("program", std::move(document->program_source),
+                                                   document->json)};
     }
     nlohmann::json json_form = std::move(document->json);  // moved out before the variant changes
     outcome = std::move(json_form);
@@ -59,14 +100,10 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
   auto* text = std::get_if<JsonText>(&outcome);
   const auto* body = std::get_if<nlohmann::json>(&outcome);
   if (text != nullptr ? !text->all_finite : !all_numbers_finite(*body)) {
-    spdlog::error("non-finite number in the response of {} (request {}): {}", instance, request_id,
-                  std::string(request.body.substr(0, 4096)));
-    return problem_response(
-        Problem{ProblemKind::internal_error, Message{ErrorCode::internal_error}, {}}, instance,
-        request_id, request.language);
+    return non_finite(request);
   }
   ApiResponse answer{
-      200, "application/json", text != nullptr ? std::move(text->text) : body->dump(), {}};
+      200, "application/json", text != nullptr ? std::move(text->text) : body->dump(), {}, {}};
   if (chosen_by_accept) answer.headers.emplace_back("Vary", "Accept");
   return answer;
 }

@@ -2,6 +2,7 @@
 // The pipeline every JSON calculation endpoint shares: media type -> strict parse -> the
 // endpoint's handler (read fields -> domain -> serialise) -> a response with no NaN or infinity.
 
+#include <memory>
 #include <string_view>
 #include <variant>
 
@@ -10,6 +11,7 @@
 #include "api/api_response.h"
 #include "api/json_writer.h"
 #include "api/problem.h"
+#include "domain/common/text_source.h"
 
 namespace cutcalc::api {
 
@@ -27,7 +29,16 @@ struct JsonWithText {
   nlohmann::json json;
   std::string text;       // sent as text/plain; charset=us-ascii
   std::string file_name;  // for Content-Disposition: attachment
+  // A program written as it is sent (both set, or neither): the text form instead of `text`, and
+  // the JSON form's "program" member, which then goes first, instead of json["program"].
+  std::unique_ptr<domain::TextSource> text_source;
+  std::unique_ptr<domain::TextSource> program_source;
 };
+
+// Writes a streamed program whole into `text` and json["program"] (a caller that needs it at once).
+void write_whole(JsonWithText& answer);
+// Writes a body written as it is sent whole into `body` (a caller that needs it at once).
+void write_whole(ApiResponse& response);
 
 // JsonText: an answer written straight to text (api/json_writer.h), for the hottest endpoints.
 using HandlerOutcome = std::variant<nlohmann::json, Problem, JsonWithText, JsonText>;

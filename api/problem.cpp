@@ -112,7 +112,8 @@ ApiResponse problem_response(const Problem& problem, const std::string& instance
   ApiResponse response{http_status(problem.kind),
                        kProblemMediaType,
                        problem_json(problem, instance, request_id, language),
-                       {{"Content-Language", std::string(language_tag(language))}}};
+                       {{"Content-Language", std::string(language_tag(language))}},
+                       {}};
   if (choice == LanguageChoice::negotiated) {
     response.headers.emplace_back("Vary", "Accept-Language");
   }

@@ -904,7 +904,8 @@ int run_one(std::string_view path, Form form, const std::uint8_t* data, std::siz
   const api::ApiRequest request{path, "application/json", body, "fuzz",
                                 form == Form::plain_text ? std::string_view("text/plain")
                                                          : std::string_view("application/json")};
-  const api::ApiResponse response = api::run_json_endpoint(request, handler_for(path));
+  api::ApiResponse response = api::run_json_endpoint(request, handler_for(path));
+  api::write_whole(response);
   if (auto why = broken_promise(path, body, response, form)) {
     report_and_abort(*why, response, body);
   }

@@ -249,8 +249,9 @@ std::size_t write_program_seeds(const cutcalc::api::CalculationRoute& route,
     if (!variant.contains("program")) variant["program"] = nlohmann::json::object();
     variant["program"]["dialect"] = dialect;
     if (std::string_view(dialect) != "fanuc") variant["program"].erase("program_number");
-    const cutcalc::api::HandlerOutcome outcome = route.handler(variant);
-    const auto* both = std::get_if<cutcalc::api::JsonWithText>(&outcome);
+    cutcalc::api::HandlerOutcome outcome = route.handler(variant);
+    auto* both = std::get_if<cutcalc::api::JsonWithText>(&outcome);
+    if (both != nullptr) cutcalc::api::write_whole(*both);
     if (both == nullptr) continue;  // the route refuses this dialect
     std::string program = both->text;
     constexpr std::size_t kMaxLen = 4096;  // scripts/ci-fuzz.sh -max_len

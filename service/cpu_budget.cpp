@@ -47,6 +47,30 @@ std::string own_cgroup(const std::filesystem::path& self_cgroup) {
   return {};
 }
 
+// The cgroup v1 memory controller's path of this process: the "N:...memory...:" line of
+// /proc/self/cgroup (nullopt when there is none).
+std::optional<std::string> own_v1_memory_cgroup(const std::filesystem::path& self_cgroup) {
+  std::ifstream in(self_cgroup);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto first = line.find(':');
+    const auto second = first == std::string::npos ? first : line.find(':', first + 1);
+    if (second == std::string::npos) continue;
+    std::string_view controllers = std::string_view(line).substr(first + 1, second - first - 1);
+    while (!controllers.empty()) {
+      const auto comma = controllers.find(',');
+      if (controllers.substr(0, comma) == "memory") return line.substr(second + 1);
+      controllers =
+          comma == std::string_view::npos ? std::string_view{} : controllers.substr(comma + 1);
+    }
+  }
+  return std::nullopt;
+}
+
+// A v1 memory.limit_in_bytes at or above this says "no limit" (the kernel's page-rounded
+// LONG_MAX, 9223372036854771712).
+constexpr std::uint64_t kV1Unlimited = std::uint64_t{1} << 60;
+
 }  // namespace
 
 std::optional<std::uint64_t> read_memory_limit(const std::filesystem::path& cgroup_root,
@@ -60,6 +84,22 @@ std::optional<std::uint64_t> read_memory_limit(const std::filesystem::path& cgro
     if (error == std::errc() && end != line.data()) limit = std::min(limit.value_or(bytes), bytes);
     if (relative.empty()) break;
     relative = relative.parent_path();
+  }
+  // cgroup v1 (older hosts): the memory controller's hierarchy. In a container its mount is the
+  // container's own group, whatever path /proc/self/cgroup names, so the mount's root counts too.
+  if (const auto v1 = own_v1_memory_cgroup(self_cgroup)) {
+    const std::filesystem::path mount = cgroup_root / "memory";
+    relative = std::filesystem::path(*v1).relative_path();
+    while (true) {
+      const std::string line = first_line(mount / relative / "memory.limit_in_bytes");
+      std::uint64_t bytes = 0;
+      const auto [end, error] = std::from_chars(line.data(), line.data() + line.size(), bytes);
+      if (error == std::errc() && end != line.data() && bytes < kV1Unlimited) {
+        limit = std::min(limit.value_or(bytes), bytes);
+      }
+      if (relative.empty()) break;
+      relative = relative.parent_path();
+    }
   }
   return limit;
 }

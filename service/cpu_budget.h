@@ -28,8 +28,9 @@ std::optional<double> parse_cpu_max(std::string_view line);
 CpuBudget read_cpu_budget(const std::filesystem::path& cgroup_root = "/sys/fs/cgroup",
                           const std::filesystem::path& self_cgroup = "/proc/self/cgroup");
 
-// The tightest cgroup v2 `memory.max` of this process's cgroup and its ancestors, bytes; nullopt
-// when none is set ("max") or there is no cgroup v2. Same parameters as read_cpu_budget().
+// The tightest cgroup v2 `memory.max` of this process's cgroup and its ancestors (or, on a cgroup
+// v1 host, `memory.limit_in_bytes` of its memory group, its ancestors and its mount), bytes;
+// nullopt when none is set ("max") or there is no cgroup v2. Same parameters as read_cpu_budget().
 std::optional<std::uint64_t> read_memory_limit(
     const std::filesystem::path& cgroup_root = "/sys/fs/cgroup",
     const std::filesystem::path& self_cgroup = "/proc/self/cgroup");

@@ -51,6 +51,7 @@ void write(HttpResponse& res, api::ApiResponse&& response) {
   }
   res.body = std::move(response.body);
   res.content_type = std::move(response.content_type);
+  res.body_source = std::move(response.body_source);
 }
 
 // The request headers cutcalc reads, each the first of its name, found in one pass.

@@ -45,6 +45,7 @@ struct ConnectionCounters {
   std::atomic<std::uint64_t> calculation_timeouts{0};    // 503: calculation_timeout passed
   std::atomic<std::uint64_t> calculations_abandoned{0};  // the client went while on the pool
   std::atomic<std::uint64_t> memory_refused{0};          // 503: the memory budget was spent
+  std::atomic<std::uint64_t> streams_broken{0};          // a body written as sent threw: cut short
   // Bytes the open connections hold in their buffers, as of the loops' last sweep (gauge): an idle
   // connection gives its buffers back, so this is about the connections busy now.
   std::atomic<std::uint64_t> buffer_bytes{0};

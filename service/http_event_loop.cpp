@@ -1,10 +1,12 @@
 #include "service/http_event_loop.h"
 
+#include <linux/sockios.h>
 #include <malloc.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
 #include <sys/epoll.h>
 #include <sys/eventfd.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -33,6 +35,9 @@ constexpr std::size_t kIdleBufferBytes = 16 * 1024;
 constexpr std::size_t kReadChunk = 16 * 1024;
 constexpr std::uint64_t kTrimAfterReleasedBytes = 4 * 1024 * 1024;
 constexpr char kContinue[] = "HTTP/1.1 100 Continue\r\n\r\n";
+// A body written as it is sent is asked for this much at a time, once the last piece has gone to
+// the socket: what one such response holds is its source's state and about one piece.
+constexpr std::size_t kBodyPieceBytes = 64 * 1024;
 
 }  // namespace
 
@@ -146,12 +151,24 @@ struct EventLoopEngine::Connection {
   bool continue_sent = false;      // 100 Continue sent for the request being received
   bool awaiting = false;           // a request of this connection is on the pool
   bool awaited_head_only = false;  // of that request: a HEAD
+  bool awaited_http11 = true;      // of that request: HTTP/1.1 (else 1.0)
   ConnectionAfter awaited_after = ConnectionAfter::close;  // of that request
   // Of that request: how it is settled, the flag that stops its calculation (shared with the
   // job) and when it is answered 503 if the pool has not answered it.
   std::function<HttpResponse(DeferredOutcome, HttpResponse, std::string_view)> awaited_settle;
   std::shared_ptr<std::atomic<bool>> awaited_stop;
   Clock::time_point awaited_deadline{};
+  // The body of the response being sent, written as it is sent: its source, its framing, what
+  // the source holds (as of its last piece), whether a piece is being written on the pool, and
+  // the deadline of that piece.
+  std::shared_ptr<domain::TextSource> stream;
+  bool stream_chunked = true;
+  std::size_t stream_bytes = 0;
+  bool stream_producing = false;
+  Clock::time_point stream_deadline{};
+  // Bytes the socket had not sent when the connection began waiting for its client to read (the
+  // write timeout then runs from each wait in which the client read enough).
+  std::size_t socket_queued = 0;
   std::uint32_t events = 0;              // the epoll interest registered
   Clock::time_point request_deadline{};  // of the request being received
   Clock::time_point deadline{};          // of whatever the connection waits for now
@@ -183,6 +200,16 @@ struct EventLoopEngine::Completion {
   std::string failure;
   bool over_budget = false;  // the answer did not fit in the memory budget: dropped
   BudgetLease answer_bytes;  // the answer's bytes in the memory budget
+};
+
+// A piece of a body written as it is sent, written on the pool for the connection sending it.
+struct EventLoopEngine::Piece {
+  int fd = -1;
+  std::uint64_t connection_id = 0;
+  std::string text;
+  bool more = false;             // the source has more to write
+  std::size_t source_bytes = 0;  // what the source holds now
+  bool failed = false;           // the source threw: the body is cut short
 };
 
 class EventLoopEngine::Loop {
@@ -218,7 +245,7 @@ class EventLoopEngine::Loop {
     {
       const std::lock_guard lock(inbox_mutex_);
       if (quit_) return;  // destroyed here: closed
-      was_empty = inbox_.empty() && completions_.empty();
+      was_empty = inbox_.empty() && completions_.empty() && pieces_.empty();
       inbox_.push_back(std::move(connection));
     }
     if (was_empty) wake();  // otherwise a wake-up is already pending
@@ -230,8 +257,20 @@ class EventLoopEngine::Loop {
     {
       const std::lock_guard lock(inbox_mutex_);
       if (quit_) return;
-      was_empty = inbox_.empty() && completions_.empty();
+      was_empty = inbox_.empty() && completions_.empty() && pieces_.empty();
       completions_.push_back(std::move(completion));
+    }
+    if (was_empty) wake();
+  }
+
+  // From a pool thread: a piece of a body written as it is sent.
+  void complete(Piece piece) {
+    bool was_empty = false;
+    {
+      const std::lock_guard lock(inbox_mutex_);
+      if (quit_) return;
+      was_empty = inbox_.empty() && completions_.empty() && pieces_.empty();
+      pieces_.push_back(std::move(piece));
     }
     if (was_empty) wake();
   }
@@ -281,11 +320,22 @@ class EventLoopEngine::Loop {
     [[maybe_unused]] const auto n = ::read(wake_fd_.get(), &count, sizeof(count));
     std::vector<std::unique_ptr<Connection>> arrived;
     std::vector<Completion> completed;
+    std::vector<Piece> pieces;
     {
       const std::lock_guard lock(inbox_mutex_);
       if (quit_) return false;
       arrived.swap(inbox_);
       completed.swap(completions_);
+      pieces.swap(pieces_);
+    }
+    for (Piece& piece : pieces) {
+      const auto it = table_.find(piece.fd);
+      if (it == table_.end() || it->second->id != piece.connection_id) continue;  // closed
+      try {
+        take_piece(*it->second, piece);
+      } catch (...) {
+        close(piece.fd);
+      }
     }
     for (Completion& done : completed) {
       const auto it = table_.find(done.fd);
@@ -325,6 +375,7 @@ class EventLoopEngine::Loop {
     const std::lock_guard lock(inbox_mutex_);
     inbox_.clear();
     completions_.clear();
+    pieces_.clear();
   }
 
   // Sets the epoll interest; false when epoll refused (the caller closes the connection).
@@ -400,11 +451,13 @@ class EventLoopEngine::Loop {
     }
     // Waiting for the pool, only the client's going is news: a failed socket, or the end of its
     // input (as nginx takes it: TCP cannot tell a half-close from a close before a write).
-    if (connection.awaiting && (events & (EPOLLHUP | EPOLLERR | EPOLLRDHUP)) != 0) {
+    if ((connection.awaiting || connection.stream_producing) &&
+        (events & (EPOLLHUP | EPOLLERR | EPOLLRDHUP)) != 0) {
       return close(fd);
     }
     if ((events & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0 && !connection.awaiting &&
-        !connection.has_output() && !connection.last_response && !connection.peer_eof) {
+        !connection.stream && !connection.has_output() && !connection.last_response &&
+        !connection.peer_eof) {
       switch (read_input(connection)) {
         case Read::data:
         case Read::again:
@@ -427,7 +480,8 @@ class EventLoopEngine::Loop {
     const auto it = table_.find(fd);
     if (it == table_.end() || it->second.get() != &connection) return;  // closed
     if (!connection.awaiting && !connection.large_body.held()) connection.body_charge = 0;
-    connection.charge.set(connection.body_charge + connection.pending_output());
+    connection.charge.set(connection.body_charge + connection.pending_output() +
+                          (connection.stream ? connection.stream_bytes : 0));
   }
 
   void step(Connection& connection) {
@@ -440,11 +494,29 @@ class EventLoopEngine::Loop {
         case Flush::again:
           if (!watch(connection, EPOLLOUT)) return close(fd);
           connection.deadline = Clock::now() + engine_.settings_.limits.write_timeout;
+          connection.socket_queued = socket_queue(fd);
           return;
         case Flush::done:
           break;
       }
+      if (connection.stream && !connection.stream_producing) {
+        switch (produce(connection)) {
+          case Produced::queued:
+            break;
+          case Produced::here:
+            continue;  // send it
+          case Produced::closed:
+            return;
+        }
+      }
       if (!more) break;  // else serving stopped at the high-water mark: serve on
+    }
+    if (connection.stream_producing) {
+      // The next piece is being written: as while waiting for the pool, only the client's going
+      // is news.
+      connection.deadline = connection.stream_deadline;
+      if (!watch(connection, EPOLLRDHUP)) close(fd);
+      return;
     }
     if (connection.awaiting) {
       // No reading until the answer is in: pipelined requests wait their turn, and an EOF or a
@@ -467,10 +539,31 @@ class EventLoopEngine::Loop {
     if (!watch(connection, EPOLLIN)) close(fd);
   }
 
+  // Bytes written to the socket that its peer has not taken yet (0 when unknown).
+  static std::size_t socket_queue(int fd) {
+    int queued = 0;
+    return ::ioctl(fd, SIOCOUTQ, &queued) == 0 && queued > 0 ? static_cast<std::size_t>(queued) : 0;
+  }
+
+  // A connection past its write timeout whose client still reads, at least at
+  // HttpLimits::min_download_bytes_per_s since the wait began: the wait starts again.
+  static bool reading_slowly(Connection& connection, const HttpLimits& limits) {
+    if ((connection.events & EPOLLOUT) == 0) return false;
+    const std::size_t queued = socket_queue(connection.fd.get());
+    const auto seconds =
+        std::chrono::duration_cast<std::chrono::seconds>(limits.write_timeout).count();
+    const std::size_t enough =
+        limits.min_download_bytes_per_s * static_cast<std::size_t>(std::max<long long>(seconds, 1));
+    if (queued + enough > connection.socket_queued) return false;
+    connection.socket_queued = queued;
+    return true;
+  }
+
   // True when it stopped at the output high-water mark with input left to serve.
   bool serve_buffered(Connection& connection) {
     const EventLoopSettings& settings = engine_.settings_;
-    while (!connection.last_response && !connection.awaiting && !connection.unread().empty()) {
+    while (!connection.last_response && !connection.awaiting && !connection.stream &&
+           !connection.unread().empty()) {
       if (connection.pending_output() >= settings.limits.max_pending_output_bytes) return true;
       const std::string_view unread = connection.unread();
       if (!worth_framing(connection, unread)) return false;
@@ -527,25 +620,90 @@ class EventLoopEngine::Loop {
         // Answers waiting for their clients have spent the budget: no more work until they drain.
         const bool over_budget = engine_.budget_.spent();
         if (over_budget) engine_.counters_.memory_refused.fetch_add(1, std::memory_order_relaxed);
-        if (!over_budget && defer(connection, *deferred, head_only, after)) return false;
-        write_response(
+        if (!over_budget && defer(connection, *deferred, head_only, after, request.http11)) {
+          return false;
+        }
+        respond(
+            connection,
             deferred->settle(
                 over_budget ? DeferredOutcome::over_budget : DeferredOutcome::pool_full, {}, {}),
-            head_only, after, connection.output);
+            head_only, after, request.http11);
       } else {
-        write_response(std::get<HttpResponse>(reply), head_only, after, connection.output);
+        respond(connection, std::move(std::get<HttpResponse>(reply)), head_only, after,
+                request.http11);
       }
-      if (after == ConnectionAfter::close) connection.last_response = true;
     }
     return false;
+  }
+
+  // Writes a response's head (and its body, unless written as it is sent) to the output.
+  void respond(Connection& connection, HttpResponse response, bool head_only, ConnectionAfter after,
+               bool http11) {
+    const bool streams = response.body_source && !head_only;
+    if (streams && !http11) after = ConnectionAfter::close;  // HTTP/1.0: the close ends the body
+    write_response(response, head_only, after, connection.output, http11);
+    if (streams) {
+      connection.stream_bytes = response.body_source->held_bytes();
+      connection.stream = std::move(response.body_source);
+      connection.stream_chunked = http11;
+    }
+    if (after == ConnectionAfter::close) connection.last_response = true;
+  }
+
+  enum class Produced { queued, here, closed };
+
+  // The next piece of the body being sent, asked for once the last one has gone to the socket:
+  // on the pool, or here when its queue is full (one piece is bounded; the body must go on).
+  Produced produce(Connection& connection) {
+    const int fd = connection.fd.get();
+    const std::uint64_t id = connection.id;
+    const auto write_piece = [fd, id](domain::TextSource& source) {
+      Piece piece{fd, id, {}, false, 0, false};
+      try {
+        piece.more = source.write_next(piece.text, kBodyPieceBytes);
+        piece.source_bytes = source.held_bytes();
+      } catch (...) {
+        piece.failed = true;
+      }
+      return piece;
+    };
+    if (engine_.pool_->try_submit(
+            [this, write_piece, source = connection.stream] { complete(write_piece(*source)); })) {
+      connection.stream_producing = true;
+      connection.stream_deadline = Clock::now() + engine_.settings_.limits.calculation_timeout;
+      return Produced::queued;
+    }
+    Piece piece = write_piece(*connection.stream);
+    return take_piece(connection, piece, false) ? Produced::here : Produced::closed;
+  }
+
+  // A piece arrived: framed into the output, the body ended after the last. A source that threw
+  // cuts the body short: the connection closes (the client sees a chunked body without its end).
+  // False when the connection closed. `advance`: send it now (a piece that came from the pool).
+  bool take_piece(Connection& connection, Piece& piece, bool advance_now = true) {
+    connection.stream_producing = false;
+    if (piece.failed) {
+      engine_.counters_.streams_broken.fetch_add(1, std::memory_order_relaxed);
+      close(connection.fd.get());
+      return false;
+    }
+    append_body_piece(piece.text, connection.stream_chunked, connection.output);
+    connection.stream_bytes = piece.source_bytes;
+    if (!piece.more) {
+      end_body(connection.stream_chunked, connection.output);
+      connection.stream.reset();
+      connection.stream_bytes = 0;
+    }
+    if (advance_now) advance(connection);
+    return true;
   }
 
   // Hands a deferred request to the pool (its `run` moves into the job); false when the queue is
   // full. Whatever the job does, its connection is answered: by the job's completion (a throw
   // included), else by the calculation timeout (a job that never ends, a completion lost to a
   // failed allocation). A stopped job's completion is not sent: its request is settled already.
-  bool defer(Connection& connection, DeferredResponse& work, bool head_only,
-             ConnectionAfter after) {
+  bool defer(Connection& connection, DeferredResponse& work, bool head_only, ConnectionAfter after,
+             bool http11) {
     const int fd = connection.fd.get();
     const std::uint64_t id = connection.id;
     auto stop = std::make_shared<std::atomic<bool>>(false);
@@ -554,7 +712,9 @@ class EventLoopEngine::Loop {
       try {
         done.response = run(*stop);
         // Computed, the answer is held: it is kept only if the budget can count it.
-        const std::uint64_t bytes = done.response.body.size();
+        const std::uint64_t bytes =
+            done.response.body.size() +
+            (done.response.body_source ? done.response.body_source->held_bytes() : 0);
         if (engine_.budget_.try_take(bytes)) {
           done.answer_bytes = BudgetLease(engine_.budget_, bytes);
         } else {
@@ -574,6 +734,7 @@ class EventLoopEngine::Loop {
     if (!queued) return false;
     connection.awaiting = true;
     connection.awaited_head_only = head_only;
+    connection.awaited_http11 = http11;
     connection.awaited_after = after;
     connection.awaited_settle = std::move(work.settle);
     connection.awaited_stop = std::move(stop);
@@ -593,9 +754,8 @@ class EventLoopEngine::Loop {
     if (engine_.phase_() != ServerPhase::serving || outcome == DeferredOutcome::timed_out) {
       connection.awaited_after = ConnectionAfter::close;
     }
-    if (connection.awaited_after == ConnectionAfter::close) connection.last_response = true;
-    write_response(settle(outcome, std::move(computed), failure), connection.awaited_head_only,
-                   connection.awaited_after, connection.output);
+    respond(connection, settle(outcome, std::move(computed), failure), connection.awaited_head_only,
+            connection.awaited_after, connection.awaited_http11);
   }
 
   // The calculation timeout passed: its job is stopped and the client answered 503.
@@ -731,7 +891,7 @@ class EventLoopEngine::Loop {
     std::uint64_t held = 0;
     std::uint64_t released = 0;
     for (const auto& [fd, connection] : table_) {
-      const bool idle = !connection->in_request && !connection->awaiting &&
+      const bool idle = !connection->in_request && !connection->awaiting && !connection->stream &&
                         !connection->has_output() && !connection->lingering &&
                         connection->unread().empty();
       if (idle && now - connection->idle_since >= kSweepInterval) {
@@ -741,6 +901,9 @@ class EventLoopEngine::Loop {
       held += connection->held_bytes();
       if (now >= connection->deadline && connection->awaiting) {
         calculations_late.push_back(fd);
+      } else if (now >= connection->deadline &&
+                 reading_slowly(*connection, engine_.settings_.limits)) {
+        connection->deadline = now + engine_.settings_.limits.write_timeout;
       } else if (now >= connection->deadline) {
         if (connection->in_request) {
           engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
@@ -787,6 +950,7 @@ class EventLoopEngine::Loop {
   std::mutex inbox_mutex_;
   std::vector<std::unique_ptr<Connection>> inbox_;              // guarded by inbox_mutex_
   std::vector<Completion> completions_;                         // guarded by inbox_mutex_
+  std::vector<Piece> pieces_;                                   // guarded by inbox_mutex_
   bool quit_ = false;                                           // guarded by inbox_mutex_
   std::unordered_map<int, std::unique_ptr<Connection>> table_;  // loop thread only
   std::uint64_t reported_buffer_bytes_ = 0;  // this loop's share of counters_.buffer_bytes

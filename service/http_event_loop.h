@@ -141,6 +141,7 @@ class EventLoopEngine {
  private:
   struct Connection;
   struct Completion;
+  struct Piece;
   class Loop;
 
   const EventLoopSettings settings_;

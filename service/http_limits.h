@@ -34,6 +34,9 @@ struct HttpLimits {
   // for the requests in flight (at least 1 s).
   std::chrono::milliseconds request_timeout{10000};
   std::chrono::milliseconds write_timeout{5000};  // a response waiting for the client to read it
+  // ... unless the client read at least this rate meanwhile (the socket's queue shrank): a slow
+  // reader of a program of many megabytes keeps its connection, a stalled one does not.
+  std::size_t min_download_bytes_per_s = 1024;
   // A calculation on the pool, from its hand-over (queue wait included) to its answer: past it the
   // client gets 503 with Retry-After and the calculation is stopped at its next check. Far above
   // the largest program's time (README.md, "Running"), so only a stuck or runaway job meets it.

@@ -60,7 +60,7 @@ std::string_view reason_phrase(int status) {
 }
 
 void write_response(const HttpResponse& response, bool head_only, ConnectionAfter after,
-                    std::string& out) {
+                    std::string& out, bool http11) {
   const bool no_content = response.status == 204 || response.status < 200;
   out.reserve(out.size() + 256 + (head_only ? 0 : response.body.size()));
   out.append("HTTP/1.1 ");
@@ -71,7 +71,9 @@ void write_response(const HttpResponse& response, bool head_only, ConnectionAfte
   if (!response.content_type.empty()) {
     out.append("Content-Type: ").append(response.content_type).append("\r\n");
   }
-  if (!no_content) {
+  if (response.body_source) {
+    if (http11) out.append("Transfer-Encoding: chunked\r\n");
+  } else if (!no_content) {
     out.append("Content-Length: ");
     append_number(out, response.body.size());
     out.append("\r\n");
@@ -85,7 +87,22 @@ void write_response(const HttpResponse& response, bool head_only, ConnectionAfte
     out.append("Connection: keep-alive\r\n");
   }
   out.append("\r\n");
-  if (!head_only && !no_content) out.append(response.body);
+  if (!head_only && !no_content && !response.body_source) out.append(response.body);
+}
+
+void append_body_piece(std::string_view piece, bool chunked, std::string& out) {
+  if (piece.empty()) return;
+  if (chunked) {
+    char digits[20];
+    const auto result = std::to_chars(digits, digits + sizeof(digits), piece.size(), 16);
+    out.append(digits, result.ptr).append("\r\n");
+  }
+  out.append(piece);
+  if (chunked) out.append("\r\n");
+}
+
+void end_body(bool chunked, std::string& out) {
+  if (chunked) out.append("0\r\n\r\n");
 }
 
 }  // namespace cutcalc::service

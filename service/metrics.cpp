@@ -93,7 +93,8 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
       {"cutcalc_http_epoll_failures_total", "epoll_ctl calls that failed (the connection closed).",
        counters.epoll_failures},
       {"cutcalc_calculation_pool_jobs_total",
-       "Heavy calculations (programs) started on the calculation pool.",
+       "Jobs started on the calculation pool: heavy calculations (programs), and the pieces of "
+       "programs written as they are sent.",
        counters.calculations.jobs},
       {"cutcalc_calculation_pool_refused_total",
        "Heavy calculations answered 503 with Retry-After because the pool's queue was full.",
@@ -109,6 +110,10 @@ std::string render_connection_metrics(const ConnectionCounters& counters,
       {"cutcalc_calculations_abandoned_total",
        "Heavy calculations stopped because their connection closed before the answer.",
        counters.calculations_abandoned},
+      {"cutcalc_streams_broken_total",
+       "Programs sent as they are written whose writing failed after the status was sent: the "
+       "connection was closed and the client saw a truncated chunked body.",
+       counters.streams_broken},
   };
   std::ostringstream out;
   for (const Counter& counter : all) {

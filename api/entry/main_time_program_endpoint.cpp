@@ -38,7 +38,7 @@ HandlerOutcome handle_main_time_program(const nlohmann::json& body) {
                          {"not_modelled", program.not_modelled},
                          {"warnings", program::to_json(program.warnings)},
                          {"main_time", main_time_json(main_time.value(), limits)}};
-  JsonWithText answer{std::move(json), program.program, program.file_name};
+  JsonWithText answer{std::move(json), program.program, program.file_name, {}, {}};
   if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
     return std::move(*problem);
   }

@@ -138,7 +138,7 @@ HandlerOutcome handle_grooving_cycle(const nlohmann::json& body) {
   json["dialect"] = domain::program::dialect_name(options.dialect);
   json["units"] = domain::program::units_name(options.units);
   json["decimals"] = domain::program::decimals_of(options);
-  JsonWithText answer{std::move(json), program.program, program.file_name};
+  JsonWithText answer{std::move(json), program.program, program.file_name, {}, {}};
   if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
     return std::move(*problem);
   }

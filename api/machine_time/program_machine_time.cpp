@@ -44,6 +44,8 @@ void append_line(std::string& program, const std::string& line) {
 std::optional<Problem> add_machine_time(JsonWithText& answer,
                                         const program::MachineRequest& machine, Dialect dialect) {
   if (!machine.timing) return std::nullopt;
+  // The time is known once the whole program is: it is written at once here, not as it is sent.
+  write_whole(answer);
   const std::string& text = answer.json.at("program").get_ref<const std::string&>();
   mt::ProgramTimeParams params;
   params.program = text;

@@ -107,8 +107,7 @@ nlohmann::json to_json(const model::RotorDimensions& rotor) {
 }
 
 nlohmann::json to_json(const model::PolygonHoleResult& result) {
-  return {{"program", result.program},
-          {"blocks_per_loop", result.blocks_per_loop},
+  return {{"blocks_per_loop", result.blocks_per_loop},
           {"loop_length_mm", result.loop_length_mm},
           {"feed_per_rev_mm", result.feed_per_rev_mm},
           {"eccentricity_mm", result.eccentricity_mm},
@@ -185,8 +184,11 @@ HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
     }
     json["geometry"] = to_json(geometry.value());
   }
-  JsonWithText answer{std::move(json), model::program_with_warning_comments(result.value()),
-                      result.value().file_name};
+  JsonWithText answer{std::move(json),
+                      {},
+                      result.value().file_name,
+                      model::open_program_text(result.value(), true),
+                      model::open_program_text(result.value(), false)};
   if (auto problem = machine_time::add_machine_time(answer, request.machine, options.dialect)) {
     return std::move(*problem);
   }

@@ -36,7 +36,7 @@ const std::string& largest_polygon_program() {
       std::cerr << "polygon hole: unexpected error\n";
       std::abort();
     }
-    return polygon::program_with_warning_comments(result.value());
+    return polygon::program_text(result.value(), true);
   }();
   return text;
 }

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "domain/common/golden_section.h"
+#include "domain/common/interruption.h"
 
 namespace cutcalc::domain::polygon::detail {
 
@@ -195,6 +196,7 @@ double biarc_deviation(const CentrePath& path, double theta0, double theta1, con
 Result<PhaseFit> fit_ellipse_arc(const CentrePath& path, double tolerance, int max_m) {
   const double delta = path.shape().delta;
   for (int m = 1; m <= max_m; ++m) {
+    interruption_point();
     PhaseFit fit;
     fit.m = m;
     fit.biarcs.reserve(static_cast<std::size_t>(m));

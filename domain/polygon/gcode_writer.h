@@ -2,13 +2,16 @@
 // The G-code text of spec polygon-holes.md section 5: number format, the printed loop (P23) and
 // the program skeleton with layers and helical ramps (P22). Private to domain/polygon.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "domain/common/text_source.h"
 #include "domain/polygon/biarc_fit.h"
 #include "domain/polygon/polygon_hole.h"
+#include "domain/program/dialect_writer.h"
 #include "domain/program/program_options.h"
 
 namespace cutcalc::domain::polygon::detail {
@@ -77,23 +80,50 @@ struct ProgramLayout {
   double feed_per_rev_mm = 0.0;  // (N-1) L_p
 };
 
-// Section 5 (skeleton), P22 (layers, ramps with Z linear in unrounded path length), P23 (F
-// words), and the C words of the c_axis mode: today's program.
-std::string write_program(const ProgramLayout& layout, const PrintedLoop& loop);
+// How the body is written: today's words and numbers, or a dialect's (programs.md section 2).
+struct BodyStyle {
+  NumberFormat fmt;
+  const program::DialectWords* words = nullptr;
+  std::string spindle_speed;                // the S word's number
+  bool ramp_feed_along_projection = false;  // fanuc: F along the arc projected on XY
+  program::Coolant coolant = program::Coolant::off;
+};
+
+// A program as its text is made: everything before the body (`head`), the layout and the printed
+// loop the body repeats, and the end after it (`tail`). Read by open_program.
+struct PolygonProgram {
+  std::string head;
+  ProgramLayout layout;
+  PrintedLoop loop;
+  BodyStyle style;
+  std::string tail;
+  [[nodiscard]] std::size_t held_bytes() const;
+};
+
+// The text of `program` with `head` in place of its own (warning lines added), written as it is
+// read: the body of section 5, P22 (layers, ramps with Z linear in unrounded path length), P23 (F
+// words) and the C words of the c_axis mode, from S M3 (c_axis: G0 X Y C0) with [M8|M7] through M5
+// (c_axis: the last G0 Z) and [M9], then the tail. A fanuc ramp loop takes the flat F: it applies F
+// along the arc's projection on the plane.
+std::unique_ptr<TextSource> open_program(std::shared_ptr<const PolygonProgram> program,
+                                         std::string head);
 
 // Today's comment lines (their text, numbers in mm), in order; `ramp_feed_along_projection`: the
 // ramp loops take the flat F (fanuc).
 std::vector<std::string> program_comments(const ProgramLayout& layout, const PrintedLoop& loop,
                                           bool ramp_feed_along_projection = false);
 
+// Section 5's program: today's (no `program` object), with today's comments.
+std::shared_ptr<const PolygonProgram> plain_program(const ProgramLayout& layout,
+                                                    const PrintedLoop& loop);
+
 // The program in a dialect (programs.md section 2, polygon): the dialect's header with today's
-// comments (`comments`: warnings after the first), [tool change] G0 [G43] Z{safe} [H], today's
-// body from S M3 (c_axis: G0 X Y C0) with [M8|M7], through M5 (c_axis: the last G0 Z) and [M9],
-// the dialect's end. `loop` printed with the options' NumberFormat. A fanuc ramp loop takes the
-// flat F: it applies F along the arc's projection on the plane.
-std::string write_dialect_program(const ProgramLayout& layout, const PrintedLoop& loop,
-                                  const std::vector<std::string>& comments,
-                                  const program::ProgramOptions& options);
+// comments (`comments`: warnings after the first), [tool change] G0 [G43] Z{safe} [H], the body,
+// the dialect's end. `loop` printed with the options' NumberFormat.
+std::shared_ptr<const PolygonProgram> dialect_program(const ProgramLayout& layout,
+                                                      const PrintedLoop& loop,
+                                                      const std::vector<std::string>& comments,
+                                                      const program::ProgramOptions& options);
 
 // P22: the number of arc blocks of the program as counted in section 10.
 double program_arc_blocks(double layers, int loops_per_layer, std::size_t blocks_per_loop);

@@ -158,7 +158,7 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
     }
   }
   if (!params.program) {
-    result.program = detail::write_program(layout, loop);
+    result.program = detail::plain_program(layout, loop);
     result.file_name = "polygon-hole-N" + std::to_string(N) + "-d" + detail::fmt4(d) + ".ngc";
     return result;
   }
@@ -208,31 +208,35 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
     // The comment numbers stay in mm (4 decimals of an inch would print the tolerance as 0).
     comments.push_back("NUMBERS IN THESE COMMENTS IN MM, PROGRAM UNITS INCH");
   }
-  result.program = detail::write_dialect_program(layout, loop, comments, options);
+  result.program = detail::dialect_program(layout, loop, comments, options);
   result.file_name = program::file_name(options);
   return result;
 }
 
-std::string program_with_warning_comments(const PolygonHoleResult& result) {
-  const std::string& program = result.program;
-  if (result.printed_path_deviation_mm) {
-    return program;  // a dialect program has its warning lines already
+std::unique_ptr<TextSource> open_program_text(const PolygonHoleResult& result,
+                                              bool warning_comments) {
+  std::string head = result.program->head;
+  // A dialect program has its warning lines already.
+  if (warning_comments && !result.printed_path_deviation_mm && !result.warnings.empty()) {
+    // After the first comment line: the line after the leading "%".
+    const std::size_t first_line_end = head.find('\n');
+    const std::size_t comment_end =
+        first_line_end == std::string::npos ? first_line_end : head.find('\n', first_line_end + 1);
+    if (comment_end != std::string::npos) {
+      std::string comments;
+      for (const program::Warning& warning : result.warnings) {
+        // Appended piece by piece: GCC 12's -Wrestrict misfires on "literal" + std::string.
+        comments.append("(").append(comment_safe(program::comment_text(warning))).append(")\n");
+      }
+      head.insert(comment_end + 1, comments);
+    }
   }
-  // After the first comment line: the line after the leading "%".
-  const std::size_t first_line_end = program.find('\n');
-  const std::size_t comment_end = first_line_end == std::string::npos
-                                      ? std::string::npos
-                                      : program.find('\n', first_line_end + 1);
-  if (comment_end == std::string::npos || result.warnings.empty()) {
-    return program;
-  }
-  std::string comments;
-  for (const program::Warning& warning : result.warnings) {
-    // Appended piece by piece: GCC 12's -Wrestrict misfires on "literal" + std::string.
-    comments.append("(").append(comment_safe(program::comment_text(warning))).append(")\n");
-  }
-  std::string text = program;
-  text.insert(comment_end + 1, comments);
+  return detail::open_program(result.program, std::move(head));
+}
+
+std::string program_text(const PolygonHoleResult& result, bool warning_comments) {
+  std::string text;
+  write_all(*open_program_text(result, warning_comments), text);
   return text;
 }
 

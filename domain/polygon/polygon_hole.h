@@ -4,14 +4,20 @@
 // Units: mm, rev/min, ms, degrees in the program. Inputs are range-checked by the caller (each
 // field on its own, spec section 10); this function checks what depends on several inputs.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "domain/common/result.h"
+#include "domain/common/text_source.h"
 #include "domain/program/program_options.h"
 
 namespace cutcalc::domain::polygon {
+
+namespace detail {
+struct PolygonProgram;
+}  // namespace detail
 
 inline constexpr int kMaxBiarcsPerEllipseArc = 1000;      // P21: else tolerance_unreachable
 inline constexpr double kMaxProgramArcBlocks = 200000.0;  // section 10: else program_too_large
@@ -70,7 +76,8 @@ struct MachiningTime {
 };
 
 struct PolygonHoleResult {
-  std::string program;                             // section 5 text, LF line ends
+  // Section 5's program, LF line ends: its text is written as it is read (open_program_text).
+  std::shared_ptr<const detail::PolygonProgram> program;
   int blocks_per_loop = 0;                         // P21
   double loop_length_mm = 0.0;                     // L_p (P23)
   double feed_per_rev_mm = 0.0;                    // (N - 1) L_p (P23)
@@ -94,8 +101,13 @@ struct PolygonHoleResult {
 // 200 000 arc blocks), not_converged (a numerical procedure failed: a bug).
 Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params);
 
-// The program with each warning written as a comment line `(WARNING {code}: {detail})` after the
-// first comment line: the plain-text answer, where the JSON warnings are not seen.
-std::string program_with_warning_comments(const PolygonHoleResult& result);
+// The program's text, written as it is read. `warning_comments`: each warning written as a comment
+// line `(WARNING {code}: {detail})` after the first comment line, for the plain-text answer where
+// the JSON warnings are not seen (a dialect program has them in its comment block already).
+std::unique_ptr<TextSource> open_program_text(const PolygonHoleResult& result,
+                                              bool warning_comments);
+
+// The whole text of open_program_text.
+std::string program_text(const PolygonHoleResult& result, bool warning_comments = false);
 
 }  // namespace cutcalc::domain::polygon

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <string>
 
+#include "domain/common/interruption.h"
+
 namespace cutcalc::domain::polygon::detail {
 namespace {
 
@@ -66,6 +68,7 @@ double printed_path_deviation_mm(const CentrePath& path, double d_mm,
   Eigen::Vector2d S = point(loop.start_X, loop.start_Y);
   std::vector<Eigen::Vector2d> exact(kDeviationPathSamples + 1, Eigen::Vector2d::Zero());
   for (std::size_t b = 0; b < blocks.size() && b < loop.blocks.size(); ++b) {
+    interruption_point();
     const PrintedBlock& printed = loop.blocks[b];
     const Eigen::Vector2d E = point(printed.X, printed.Y);
     const PrintedArc arc(S, E, S + point(printed.I, printed.J));

@@ -20,8 +20,10 @@ namespace {
 api::ApiResponse run(std::string_view path, std::string_view body) {
   for (const api::CalculationRoute& route : api::calculation_routes()) {
     if (path == route.path) {
-      return api::run_json_endpoint({path, "application/json", body, "fuzz", "application/json"},
-                                    route.handler);
+      api::ApiResponse response = api::run_json_endpoint(
+          {path, "application/json", body, "fuzz", "application/json"}, route.handler);
+      api::write_whole(response);
+      return response;
     }
   }
   ADD_FAILURE() << "no calculation route " << path;

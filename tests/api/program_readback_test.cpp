@@ -135,8 +135,9 @@ void expect_reads_back(std::string_view program, const json& request, std::strin
 
 // The program texts of one request's answer, or none when the handler refuses it.
 std::vector<std::string> programs_of(const api::CalculationRoute& route, const json& request) {
-  const api::HandlerOutcome outcome = route.handler(request);
-  const auto* both = std::get_if<api::JsonWithText>(&outcome);
+  api::HandlerOutcome outcome = route.handler(request);
+  auto* both = std::get_if<api::JsonWithText>(&outcome);
+  if (both != nullptr) api::write_whole(*both);
   if (both == nullptr) return {};
   std::vector<std::string> programs = {both->text};
   if (both->json.contains("program") && both->json.at("program").is_string()) {

@@ -77,8 +77,9 @@ json request_with_program(const json& reference, const std::string& dialect,
 
 LatheRun write_and_run(api::JsonHandler handler, const json& request, const std::string& dialect) {
   LatheRun out;
-  const auto outcome = handler(request);
-  const auto* both = std::get_if<api::JsonWithText>(&outcome);
+  auto outcome = handler(request);
+  auto* both = std::get_if<api::JsonWithText>(&outcome);
+  if (both != nullptr) api::write_whole(*both);
   if (both == nullptr) {
     ADD_FAILURE() << "no program for " << request.dump();
     return out;

@@ -127,7 +127,7 @@ CaseSummary run_case(const MatrixCase& c) {
   summary.blocks_per_loop = result.blocks_per_loop;
   summary.claimed_deviation_mm = result.max_path_deviation_mm;
 
-  const Rs274Run run = run_rs274(result.program);
+  const Rs274Run run = run_rs274(cutcalc::domain::polygon::program_text(result));
   if (!run.started) {
     ADD_FAILURE() << "rs274 did not run: " << run.spawn_error;
     return summary;

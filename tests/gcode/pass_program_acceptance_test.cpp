@@ -77,8 +77,9 @@ struct Answer {
 };
 
 Answer answer(const json& request) {
-  const auto outcome = cutcalc::api::entry::handle_main_time_program(request);
-  const auto* both = std::get_if<cutcalc::api::JsonWithText>(&outcome);
+  auto outcome = cutcalc::api::entry::handle_main_time_program(request);
+  auto* both = std::get_if<cutcalc::api::JsonWithText>(&outcome);
+  if (both != nullptr) cutcalc::api::write_whole(*both);
   if (both == nullptr) {
     ADD_FAILURE() << "no program for " << request.dump();
     return {};

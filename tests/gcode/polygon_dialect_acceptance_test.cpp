@@ -75,7 +75,7 @@ std::string write(PolygonHoleParams params, std::optional<program::ProgramOption
   params.program = options;
   const auto result = generate_polygon_hole(params);
   EXPECT_TRUE(result.ok());
-  return result.ok() ? result.value().program : std::string();
+  return result.ok() ? cutcalc::domain::polygon::program_text(result.value()) : std::string();
 }
 
 std::string name_of(const std::string& dialect) {

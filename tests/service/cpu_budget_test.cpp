@@ -47,6 +47,10 @@ class FakeCgroup {
   void set_memory_max(const std::string& cgroup, const std::string& line) {
     write_file(root_ / "fs" / cgroup / "memory.max", line + "\n");
   }
+  void set_self(const std::string& text) { write_file(root_ / "self_cgroup", text); }
+  void write(const std::string& file, const std::string& line) {
+    write_file(root_ / "fs" / file, line + "\n");
+  }
   [[nodiscard]] std::optional<std::uint64_t> memory_limit() const {
     return read_memory_limit(root_ / "fs", root_ / "self_cgroup");
   }
@@ -136,6 +140,18 @@ TEST(MemoryLimit, TheTightestMemoryMaxUpTheTreeWins) {
   EXPECT_EQ(cgroup.memory_limit(), std::optional<std::uint64_t>(134217728));
   cgroup.set_memory_max("kubepods", "67108864");  // tighter above
   EXPECT_EQ(cgroup.memory_limit(), std::optional<std::uint64_t>(67108864));
+}
+
+TEST(MemoryLimit, CgroupV1LimitInBytesCountsAndItsUnlimitedValueDoesNot) {
+  FakeCgroup cgroup;
+  cgroup.set_self("12:cpu,cpuacct:/x\n11:memory:/machine.slice/libpod-1\n");
+  cgroup.write("memory/machine.slice/libpod-1/memory.limit_in_bytes", "9223372036854771712");
+  EXPECT_FALSE(cgroup.memory_limit().has_value());
+  cgroup.write("memory/machine.slice/libpod-1/memory.limit_in_bytes", "268435456");
+  EXPECT_EQ(cgroup.memory_limit(), std::optional<std::uint64_t>(268435456));
+  // In a container the mount's root is the container's group.
+  cgroup.write("memory/memory.limit_in_bytes", "134217728");
+  EXPECT_EQ(cgroup.memory_limit(), std::optional<std::uint64_t>(134217728));
 }
 
 TEST(MemoryLimit, MaxEverywhereOrNoFileMeansNone) {

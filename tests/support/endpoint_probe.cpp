@@ -8,7 +8,10 @@ using nlohmann::json;
 
 api::ApiResponse EndpointProbe::answer(const json& request, const char* accept) const {
   const std::string body = request.dump();
-  return api::run_json_endpoint({path_, "application/json", body, "test", accept}, handler_);
+  api::ApiResponse response =
+      api::run_json_endpoint({path_, "application/json", body, "test", accept}, handler_);
+  api::write_whole(response);
+  return response;
 }
 
 std::set<std::string> EndpointProbe::pointers(const json& request) const {

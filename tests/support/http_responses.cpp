@@ -80,7 +80,38 @@ ParsedResponses parse_responses(std::string_view bytes) {
       parsed.responses.push_back(std::move(response));
       continue;
     }
-    if (response.count("transfer-encoding") != 0) return fail("Transfer-Encoding in a response");
+    if (response.count("transfer-encoding") != 0) {
+      // A body written as it is sent: exactly "chunked", no Content-Length, chunks of lower-case
+      // hex sizes without extensions, the last one empty, no trailer.
+      if (response.count("transfer-encoding") != 1 ||
+          response.header("transfer-encoding") != "chunked" ||
+          response.count("content-length") != 0 || response.status != 200) {
+        return fail("a Transfer-Encoding other than one chunked 200 without Content-Length");
+      }
+      for (;;) {
+        const std::size_t size_end = bytes.find("\r\n");
+        if (size_end == std::string_view::npos) return fail("truncated chunked body");
+        const std::string_view size_text = bytes.substr(0, size_end);
+        if (size_text.empty() || size_text.size() > 8 ||
+            size_text.find_first_not_of("0123456789abcdef") != std::string_view::npos ||
+            (size_text.size() > 1 && size_text.front() == '0')) {
+          return fail("bad chunk size '" + std::string(size_text.substr(0, 20)) + "'");
+        }
+        const std::size_t size = std::stoul(std::string(size_text), nullptr, 16);
+        bytes.remove_prefix(size_end + 2);
+        if (size == 0) {
+          if (bytes.substr(0, 2) != "\r\n") return fail("truncated chunked body end");
+          bytes.remove_prefix(2);
+          break;
+        }
+        if (bytes.size() < size + 2) return fail("truncated chunked body");
+        if (bytes.substr(size, 2) != "\r\n") return fail("a chunk not followed by CRLF");
+        response.body.append(bytes.substr(0, size));
+        bytes.remove_prefix(size + 2);
+      }
+      parsed.responses.push_back(std::move(response));
+      continue;
+    }
     if (response.status == 204) {  // no content, and no Content-Length (RFC 9110 8.6)
       if (response.count("content-length") != 0) return fail("Content-Length in a 204");
       parsed.responses.push_back(std::move(response));

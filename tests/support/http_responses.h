@@ -30,9 +30,10 @@ struct ParsedResponses {
 };
 
 // Every response is "HTTP/1.1 NNN reason" CRLF, field lines, CRLF; a final one carries exactly one
-// Content-Length and no Transfer-Encoding, then that many bytes. A response to HEAD has the
-// Content-Length of the body it does not carry: a final response followed by nothing or by
-// "HTTP/1.1 " is read as bodiless (no cutcalc body starts so).
+// Content-Length and no Transfer-Encoding, then that many bytes, or (a 200 written as it is sent)
+// Transfer-Encoding: chunked alone and a whole chunked body, decoded into `body`. A response to
+// HEAD has the Content-Length of the body it does not carry: a final response followed by nothing
+// or by "HTTP/1.1 " is read as bodiless (no cutcalc body starts so).
 ParsedResponses parse_responses(std::string_view bytes);
 
 }  // namespace cutcalc::testing

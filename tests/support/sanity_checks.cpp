@@ -29,8 +29,9 @@ void expect_no_negative_lengths(const nlohmann::json& value, const std::string& 
 
 int expect_sane_answer(const char* path, api::JsonHandler handler, const nlohmann::json& request) {
   const std::string body = request.dump();
-  const api::ApiResponse response =
+  api::ApiResponse response =
       api::run_json_endpoint({path, "application/json", body, "sanity", ""}, handler);
+  api::write_whole(response);
   EXPECT_TRUE(response.status == 200 || response.status == 422)
       << response.status << " for " << body << "\n"
       << response.body;

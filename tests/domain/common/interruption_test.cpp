@@ -55,9 +55,13 @@ TEST(Interruption, ScopeEndsWithItsBlockAndBelongsToItsThread) {
 TEST(Interruption, PolygonProgramStopsWhenAskedAndRunsWhenNot) {
   std::atomic<bool> stop{false};
   const InterruptionScope scope(stop);
-  EXPECT_TRUE(polygon::generate_polygon_hole(square_hole()).ok());
+  const auto hole = polygon::generate_polygon_hole(square_hole());
+  ASSERT_TRUE(hole.ok());
+  EXPECT_FALSE(polygon::program_text(hole.value()).empty());
+  // The fit stops, and so does a program written as it is read.
   stop.store(true);
   EXPECT_THROW(static_cast<void>(polygon::generate_polygon_hole(square_hole())), Interrupted);
+  EXPECT_THROW(static_cast<void>(polygon::program_text(hole.value())), Interrupted);
 }
 
 TEST(Interruption, ProgramTimingStopsWhenAsked) {

@@ -16,7 +16,7 @@
 namespace {
 
 namespace polygon_detail = cutcalc::domain::polygon::detail;
-using cutcalc::domain::polygon::program_with_warning_comments;
+using cutcalc::domain::polygon::program_text;
 using cutcalc::test::polygon::arc_lines;
 using cutcalc::test::polygon::four_decimals;
 using cutcalc::test::polygon::generate;
@@ -90,15 +90,15 @@ TEST(GcodeText, TextRulesForEveryNAndMode) {
       params.block_time_ms = 8.0;  // both warnings in feed_per_rev mode for some N
       params.spindle_speed_rpm = 400.0;
       const auto result = generate(params);
-      expect_text_rules(result.program);
-      expect_text_rules(program_with_warning_comments(result));
+      expect_text_rules(program_text(result));
+      expect_text_rules(program_text(result, true));
     }
   }
   // Small and odd inputs: d = 1, 0.1 um, deep holes with an uneven step.
   PolygonHoleParams small = hole(3, 1.0, 0.0001);
   small.depth_mm = 1.0;
   small.step_down_mm = 0.3;
-  expect_text_rules(generate(small).program);
+  expect_text_rules(program_text(generate(small)));
 }
 
 TEST(GcodeText, NumberFormat) {
@@ -117,7 +117,7 @@ TEST(GcodeText, NumberFormat) {
 // Section 5 skeleton, feed_per_rev: the line sequence around the loops.
 TEST(GcodeText, SkeletonFeedPerRev) {
   const auto result = generate(square_a16());
-  const std::vector<Line> lines = parse_program(result.program);
+  const std::vector<Line> lines = parse_program(program_text(result));
   EXPECT_EQ(lines[1].text, "(CUTCALC POLYGON HOLE N4 D16.0000 A16.0000)");
   std::vector<std::string> code;
   for (const Line& line : lines) {
@@ -152,7 +152,7 @@ TEST(GcodeText, SkeletonFeedPerRev) {
 // Section 5 skeleton, c_axis: no S/M3, C0 at the start, one G94 F line, a C word on every arc.
 TEST(GcodeText, SkeletonCAxis) {
   const auto result = generate(square_a16(Synchronization::c_axis));
-  const std::vector<Line> lines = parse_program(result.program);
+  const std::vector<Line> lines = parse_program(program_text(result));
   std::vector<std::string> code;
   for (const Line& line : lines) {
     if (!line.comment && !line.is_arc()) {
@@ -203,7 +203,7 @@ TEST(GcodeText, LayersAndHelicalRamps) {
     params.step_down_mm = c.step;
     params.loops_per_layer = c.loops_per_layer;
     const auto result = generate(params);
-    const auto arcs = arc_lines(parse_program(result.program));
+    const auto arcs = arc_lines(parse_program(program_text(result)));
     const auto per_loop = static_cast<std::size_t>(result.blocks_per_loop);
     const int loops = c.layers * c.loops_per_layer + (c.loops_per_layer == 1 ? 1 : 0);
     ASSERT_EQ(arcs.size(), static_cast<std::size_t>(loops) * per_loop);
@@ -239,7 +239,7 @@ TEST(GcodeText, PrintedLoopLengthAndFeedWords) {
     PolygonHoleParams params = hole(N, 20.0, 0.0005);
     params.loops_per_layer = N == 5 ? 1 : 2;
     const auto result = generate(params);
-    const auto lines = parse_program(result.program);
+    const auto lines = parse_program(program_text(result));
     const auto arcs = arc_lines(lines);
     const double e_printed = std::stod(four_decimals(result.eccentricity_mm));
     const double L_p =
@@ -304,7 +304,7 @@ TEST(GcodeText, WarningCommentsFollowTheFirstCommentLine) {
   params.spindle_speed_rpm = 1000.0;
   const auto result = generate(params);
   ASSERT_EQ(result.warnings.size(), 2U);
-  const std::string text = program_with_warning_comments(result);
+  const std::string text = program_text(result, true);
   const auto lines = parse_program(text);
   EXPECT_EQ(lines[1].text, "(CUTCALC POLYGON HOLE N6 D20.0000 A11.5470)");
   for (std::size_t i = 0; i < 2; ++i) {
@@ -312,11 +312,12 @@ TEST(GcodeText, WarningCommentsFollowTheFirstCommentLine) {
         "(WARNING " + std::string(cutcalc::domain::program::warning_name(result.warnings[i].code));
     EXPECT_EQ(lines[2 + i].text.rfind(start + ": ", 0), 0U);
   }
-  EXPECT_EQ(text.size(), result.program.size() + lines[2].text.size() + lines[3].text.size() + 2);
+  EXPECT_EQ(text.size(),
+            program_text(result).size() + lines[2].text.size() + lines[3].text.size() + 2);
   // Without warnings the program is unchanged.
   auto quiet = generate(hole(6, 20.0, 0.001, Synchronization::c_axis));
   ASSERT_TRUE(quiet.warnings.empty());
-  EXPECT_EQ(program_with_warning_comments(quiet), quiet.program);
+  EXPECT_EQ(program_text(quiet, true), program_text(quiet));
   EXPECT_EQ(result.file_name, "polygon-hole-N6-d20.0000.ngc");
 }
 

@@ -67,7 +67,7 @@ std::optional<double> field(const PolygonHoleResult& r, const std::string& name)
 
 void check_program(const json& expect, const PolygonHoleParams& params,
                    const PolygonHoleResult& result) {
-  const std::vector<Line> lines = parse_program(result.program);
+  const std::vector<Line> lines = parse_program(cutcalc::domain::polygon::program_text(result));
   const std::vector<Line> arcs = arc_lines(lines);
   ASSERT_GT(result.blocks_per_loop, 0);
   if (expect.contains("loops")) {
