@@ -231,7 +231,7 @@ std::optional<std::string> ObjectReader::optional_choice(
   return std::nullopt;
 }
 
-std::optional<std::string> ObjectReader::optional_string(std::string_view key) {
+std::optional<std::string_view> ObjectReader::optional_string(std::string_view key) {
   const nlohmann::json* value = find(key);
   if (value == nullptr) {
     return std::nullopt;
@@ -240,7 +240,7 @@ std::optional<std::string> ObjectReader::optional_string(std::string_view key) {
     add_error(key, ErrorCode::not_a_string);
     return std::nullopt;
   }
-  return value->get<std::string>();
+  return std::string_view(value->get_ref<const std::string&>());
 }
 
 std::optional<std::string> ObjectReader::required_choice(

@@ -79,8 +79,9 @@ class ObjectReader {
   // Absent: nullopt, no error. Present: a string that must be one of `allowed`.
   std::optional<std::string> optional_choice(std::string_view key,
                                              std::initializer_list<std::string_view> allowed);
-  // Absent: nullopt, no error. Present: must be a JSON string.
-  std::optional<std::string> optional_string(std::string_view key);
+  // Absent: nullopt, no error. Present: must be a JSON string, viewed where the document holds it
+  // (a program of many megabytes is not copied).
+  std::optional<std::string_view> optional_string(std::string_view key);
   // A string that must be one of `allowed`.
   std::optional<std::string> required_choice(std::string_view key,
                                              std::initializer_list<std::string_view> allowed);

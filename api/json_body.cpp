@@ -1,6 +1,7 @@
 #include "api/json_body.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -67,6 +68,95 @@ class PositionTracker {
 
 constexpr int kNumberOverflowId = 406;  // nlohmann::json out_of_range: a number beyond a double
 
+// String values of a body at least this long are decoded here, not by nlohmann's lexer, whose
+// token buffer grows by doubling beside a second copy kept for error messages: a 32 MiB program
+// to time took 128 MiB to parse, 32 MiB this way.
+constexpr std::size_t kLongStringBytes = 64 * 1024;
+
+// A body with its long string values taken out: `skeleton` has "" in their place; they are the
+// `ordinals`-th string values in document order (keys not counted), decoded in `values`.
+struct LongStrings {
+  std::string skeleton;
+  std::vector<std::size_t> ordinals;
+  std::vector<std::string> values;
+};
+
+// A string token's content decoded when it holds only printable ASCII and the two-character
+// escapes (what a program is made of); anything else (\u, a control character, a byte above
+// 0x7f) is left to nlohmann, which decides what it means and whether it is valid.
+std::optional<std::string> decode_plain_string(std::string_view content) {
+  std::string text;
+  text.reserve(content.size());
+  for (std::size_t i = 0; i < content.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(content[i]);
+    if (byte < 0x20 || byte > 0x7e) return std::nullopt;
+    if (content[i] != '\\') {
+      text.push_back(content[i]);
+      continue;
+    }
+    if (++i == content.size()) return std::nullopt;
+    switch (content[i]) {
+      case '"':
+      case '\\':
+      case '/':
+        text.push_back(content[i]);
+        break;
+      case 'b':
+        text.push_back('\b');
+        break;
+      case 'f':
+        text.push_back('\f');
+        break;
+      case 'n':
+        text.push_back('\n');
+        break;
+      case 'r':
+        text.push_back('\r');
+        break;
+      case 't':
+        text.push_back('\t');
+        break;
+      default:
+        return std::nullopt;
+    }
+  }
+  return text;
+}
+
+// The body's long string values taken out, or nullopt when it has none this path takes (the body
+// is then parsed as it is). Strings are found as JSON lexes them: outside a string, '"' opens
+// one; inside, '\\' escapes the next byte and '"' closes it; one followed by ':' is a key. Where
+// the body is not valid JSON the skeleton is invalid at the same place, and the parse of the
+// body as it is explains why.
+std::optional<LongStrings> take_long_strings(std::string_view body) {
+  LongStrings taken;
+  std::size_t copied = 0;  // body[0, copied) is in the skeleton
+  std::size_t value_ordinal = 0;
+  for (std::size_t open = body.find('"'); open != std::string_view::npos;) {
+    std::size_t close = open + 1;
+    while (close < body.size() && body[close] != '"') close += body[close] == '\\' ? 2 : 1;
+    if (close >= body.size()) return std::nullopt;  // unterminated
+    const std::size_t after = body.find_first_not_of(" \t\n\r", close + 1);
+    const bool is_key = after != std::string_view::npos && body[after] == ':';
+    if (!is_key) {
+      const std::string_view content = body.substr(open + 1, close - open - 1);
+      if (content.size() >= kLongStringBytes) {
+        auto text = decode_plain_string(content);
+        if (!text) return std::nullopt;
+        taken.skeleton.append(body.substr(copied, open + 1 - copied));
+        copied = close;
+        taken.ordinals.push_back(value_ordinal);
+        taken.values.push_back(std::move(*text));
+      }
+      ++value_ordinal;
+    }
+    open = body.find('"', close + 1);
+  }
+  if (taken.values.empty()) return std::nullopt;
+  taken.skeleton.append(body.substr(copied));
+  return taken;
+}
+
 // The common case without the bookkeeping (the strict parse below cost ~1.3 us of a
 // 15 us request): builds the document as nlohmann's own DOM parser does and counts each object's
 // keys. It gives up (false) at the first thing the strict parse must explain, which then runs on
@@ -75,7 +165,9 @@ constexpr int kNumberOverflowId = 406;  // nlohmann::json out_of_range: a number
 class PlainDocumentBuilder {
  public:
   using json = nlohmann::json;
-  explicit PlainDocumentBuilder(json& root) : root_(root) {}
+  // `long_strings`: the values take_long_strings took out of the text being parsed.
+  explicit PlainDocumentBuilder(json& root, LongStrings* long_strings = nullptr)
+      : root_(root), long_strings_(long_strings) {}
 
   bool null() { return put(nullptr); }
   bool boolean(bool value) { return put(value); }
@@ -84,7 +176,14 @@ class PlainDocumentBuilder {
   bool number_float(json::number_float_t value, const json::string_t& /*text*/) {
     return put(value);
   }
-  bool string(json::string_t& value) { return put(std::move(value)); }
+  bool string(json::string_t& value) {
+    const std::size_t ordinal = string_values_++;
+    if (long_strings_ != nullptr && next_long_ < long_strings_->ordinals.size() &&
+        long_strings_->ordinals[next_long_] == ordinal) {
+      return put(std::move(long_strings_->values[next_long_++]));
+    }
+    return put(std::move(value));
+  }
   bool binary(json::binary_t& /*value*/) { return false; }  // JSON text has none
   bool start_object(std::size_t /*elements*/) { return open(json::value_t::object); }
   bool key(json::string_t& name) {
@@ -143,6 +242,9 @@ class PlainDocumentBuilder {
   json& root_;
   std::vector<Frame> open_;
   json* member_ = nullptr;
+  LongStrings* long_strings_;
+  std::size_t string_values_ = 0;  // string values seen (keys not counted)
+  std::size_t next_long_ = 0;      // the next of long_strings_ to put in place
 };
 
 // A number beyond a double, where the strict parse stopped.
@@ -165,6 +267,15 @@ std::variant<nlohmann::json, Problem> parse_with_overflows(std::string_view body
 std::variant<nlohmann::json, Problem> parse_json_body(std::string_view body) {
   if (body.empty()) {
     return Problem{ProblemKind::malformed_json, Message{ErrorCode::empty_body}, {}};
+  }
+  if (body.size() >= kLongStringBytes) {
+    if (auto taken = take_long_strings(body)) {
+      nlohmann::json document;
+      PlainDocumentBuilder builder(document, &*taken);
+      if (nlohmann::json::sax_parse(taken->skeleton.begin(), taken->skeleton.end(), &builder)) {
+        return document;
+      }
+    }
   }
   nlohmann::json document;
   PlainDocumentBuilder builder(document);

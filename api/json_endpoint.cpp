@@ -45,9 +45,9 @@ void write_whole(ApiResponse& response) {
 namespace {
 
 // A number that is not finite reached an answer: a bug, answered 500 and logged with the request.
-ApiResponse non_finite(const ApiRequest& request) {
+ApiResponse non_finite(const ApiRequest& request, std::string_view body_start) {
   spdlog::error("non-finite number in the response of {} (request {}): {}", request.path,
-                request.request_id, std::string(request.body.substr(0, 4096)));
+                request.request_id, body_start);
   return problem_response(
       Problem{ProblemKind::internal_error, Message{ErrorCode::internal_error}, {}},
       std::string(request.path), std::string(request.request_id), request.language);
@@ -68,6 +68,14 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
   if (auto* problem = std::get_if<Problem>(&parsed)) {
     return problem_response(*problem, instance, request_id, request.language);
   }
+  // What a log line may quote of the body, kept before its storage goes.
+  std::string_view body_start = request.body.substr(0, 4096);
+  std::string kept_start;
+  if (request.body_storage != nullptr) {
+    kept_start = body_start;
+    body_start = kept_start;
+    std::string().swap(*request.body_storage);
+  }
   HandlerOutcome outcome = handler(std::get<nlohmann::json>(parsed));
   if (auto* problem = std::get_if<Problem>(&outcome)) {
     return problem_response(*problem, instance, request_id, request.language);
@@ -85,7 +93,7 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
           std::move(document->text_source)};
     }
     if (document->program_source) {
-      if (!all_numbers_finite(document->json)) return non_finite(request);
+      if (!all_numbers_finite(document->json)) return non_finite(request, body_start);
       return ApiResponse{200,
                          "application/json",
                          {},
@@ -100,7 +108,7 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
   auto* text = std::get_if<JsonText>(&outcome);
   const auto* body = std::get_if<nlohmann::json>(&outcome);
   if (text != nullptr ? !text->all_finite : !all_numbers_finite(*body)) {
-    return non_finite(request);
+    return non_finite(request, body_start);
   }
   ApiResponse answer{
       200, "application/json", text != nullptr ? std::move(text->text) : body->dump(), {}, {}};

@@ -22,6 +22,9 @@ struct ApiRequest {
   std::string_view request_id;
   std::string_view accept;           // the Accept header; only answers with a text form look at it
   Language language = Language::en;  // of problem details, from Accept-Language
+  // The storage `body` views, when the caller owns it and can let it go: freed once the body is
+  // parsed (a program of 32 MiB to time is not held twice while it is timed).
+  std::string* body_storage = nullptr;
 };
 
 // An answer that also has a plain-text form (a G-code program), chosen by the Accept header.

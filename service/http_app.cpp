@@ -131,8 +131,9 @@ void reply_json(HttpResponse& res, const nlohmann::json& body) {
 struct HttpApp::Exchange {
   Clock::time_point start;
   const char* route = "unmatched";  // metric label: a known path or "unmatched", never user text
-  std::string_view method;          // a metric label (Metrics::observe maps it to a static one)
-  std::string path;                 // the request's path, for the log and problem instances
+  std::string method;  // a metric label (Metrics::observe maps it to a static one); owned: a
+                       // calculation settles after the request's buffers are gone
+  std::string path;    // the request's path, for the log and problem instances
   std::string request_id;
   std::string remote;  // the peer's address, when the access log is on
   api::Language language = api::Language::en;
@@ -272,7 +273,7 @@ Reply HttpApp::answer(const HttpRequest& req) {
                 accept = std::string(headers.accept)](const std::atomic<bool>& stop) mutable {
       const domain::InterruptionScope interruptible(stop);
       write(res, api::run_json_endpoint({exchange.route, content_type, body, exchange.request_id,
-                                         accept, exchange.language},
+                                         accept, exchange.language, &body},
                                         handler));
       return std::move(res);
     };

@@ -539,6 +539,16 @@ class EventLoopEngine::Loop {
     if (!watch(connection, EPOLLIN)) close(fd);
   }
 
+  static void release_large_buffers(Connection& connection) {
+    if (connection.input.capacity() > kIdleBufferBytes) {
+      std::vector<char>().swap(connection.input);
+      connection.input_begin = connection.input_end = 0;
+    }
+    if (connection.decoded_body.capacity() > kIdleBufferBytes) {
+      std::string().swap(connection.decoded_body);
+    }
+  }
+
   // Bytes written to the socket that its peer has not taken yet (0 when unknown).
   static std::size_t socket_queue(int fd) {
     int queued = 0;
@@ -617,6 +627,8 @@ class EventLoopEngine::Loop {
       if (connection.requests_left > 1) --connection.requests_left;
       engine_.counters_.requests.fetch_add(1, std::memory_order_relaxed);
       if (auto* deferred = std::get_if<DeferredResponse>(&reply)) {
+        // The job owns a copy: a large body's buffers go now, not when the answer is sent.
+        if (connection.unread().empty()) release_large_buffers(connection);
         // Answers waiting for their clients have spent the budget: no more work until they drain.
         const bool over_budget = engine_.budget_.spent();
         if (over_budget) engine_.counters_.memory_refused.fetch_add(1, std::memory_order_relaxed);
@@ -797,13 +809,14 @@ class EventLoopEngine::Loop {
     if (!frame.chunked && frame.body_bytes <= limits.max_body_bytes) return EngineBusy::none;
     if (!connection.large_body.held()) {
       const std::size_t expected = frame.chunked ? body_limit : frame.body_bytes;
-      if (!connection.charge.try_add(expected)) return EngineBusy::memory;
+      const std::size_t charged = expected * kLargeBodyHeldTimes;
+      if (!connection.charge.try_add(charged)) return EngineBusy::memory;
       if (!connection.large_body.acquire(engine_.counters_.large_bodies_receiving,
                                          limits.max_large_bodies)) {
-        connection.charge.set(connection.charge.bytes() - expected);
+        connection.charge.set(connection.charge.bytes() - charged);
         return EngineBusy::uploads;
       }
-      connection.body_charge = expected;
+      connection.body_charge = charged;
       connection.buffer_limit = limits.max_buffered_bytes(body_limit);
       const auto transfer = std::chrono::milliseconds(
           expected * 1000 / std::max<std::size_t>(limits.min_upload_bytes_per_s, 1));

@@ -25,7 +25,7 @@ std::optional<model::Dialect> dialect_of(const std::optional<std::string>& name)
 HandlerOutcome handle_program_time(const nlohmann::json& body) {
   std::vector<FieldError> errors;
   ObjectReader in = root_reader(body, errors);
-  const std::optional<std::string> program = in.optional_string("program");
+  const std::optional<std::string_view> program = in.optional_string("program");
   if (!in.has("program")) {
     in.add_error("program", ErrorCode::required);
   }

@@ -108,5 +108,46 @@ TEST(JsonBody, TrailingGarbageAndBadUtf8AreMalformed) {
   }
 }
 
+// A string of `bytes` bytes of G-code-like text as it appears inside a JSON string (escapes
+// included), long enough to be taken out of the body before the parse.
+std::string long_text(std::size_t bytes, const std::string& line = "G1 X10.000 Y-2.500\\n") {
+  std::string text;
+  while (text.size() < bytes) text += line;
+  return text;
+}
+
+TEST(JsonBody, LongStringValuesEqualTheLibrarysParse) {
+  const std::string program = long_text(200 * 1024);
+  const std::string escapes = long_text(70 * 1024, R"(a\"b\\c\/d\b\f\n\r\t )");
+  for (const std::string& body : {
+           R"({"program":")" + program + R"(","dialect":"fanuc"})",
+           R"({"a":[")" + escapes + R"(", "short", ")" + program + R"("], "b": {"c": ")" + program +
+               R"("}, "d": "x"})",
+           // Not taken: a long key, \u escapes, bytes above 0x7f (the library decides those).
+           R"({")" + program + R"(": 1, "k": ")" + program + R"("})",
+           R"({"u": ")" + program + R"(\u00e9\ud83d\ude00", "v": ")" + program + R"("})",
+           "{\"w\": \"" + program + "\xc3\xa9\"}",
+       }) {
+    EXPECT_EQ(parsed(body), nlohmann::json::parse(body)) << body.substr(0, 80);
+  }
+}
+
+TEST(JsonBody, LongStringBodiesStillGetTheStrictParsesProblems) {
+  const std::string program = long_text(100 * 1024);
+  const Problem repeated = refused(R"({"program":")" + program + R"(","program":"x"})");
+  ASSERT_TRUE(repeated.detail.has_value());
+  EXPECT_EQ(repeated.detail->code, ErrorCode::duplicate_key);
+  for (const std::string& body : {
+           R"({"program":")" + program + "\x01" + R"("})",  // a raw control character
+           R"({"program":")" + program + R"(\q"})",         // an escape JSON has not
+           R"({"program":")" + program + R"(" "x"})",       // a missing comma
+           R"({"program":")" + program,                     // unterminated
+       }) {
+    const Problem problem = refused(body);
+    ASSERT_TRUE(problem.detail.has_value());
+    EXPECT_EQ(problem.detail->code, ErrorCode::invalid_json);
+  }
+}
+
 }  // namespace
 }  // namespace cutcalc::api

@@ -379,9 +379,10 @@ TEST(CalculationPool, ClientThatEndsItsInputStopsItsCalculation) {
 TEST(CalculationPool, SpentBudgetRefusesACalculationBeforeItRuns) {
   HeldEngine held(1, std::chrono::seconds(60), kSmallBudgetBytes);
   held.gate().open();
-  Client uploading(held.engine());  // a large body, counted whole from its head
+  Client uploading(held.engine());  // a large body, counted whole (as held) from its head
   uploading.send("POST /heavy HTTP/1.1\r\nHost: test\r\nContent-Length: " +
-                 std::to_string(kSmallBudgetBytes) + "\r\n\r\n" + std::string(1000, 'b'));
+                 std::to_string(kSmallBudgetBytes / kLargeBodyHeldTimes) + "\r\n\r\n" +
+                 std::string(1000, 'b'));
   ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().spent(); }));
 
   Client refused(held.engine());
@@ -454,7 +455,7 @@ TEST(CalculationPool, LargeBodyIsCountedInTheBudgetUntilItsCalculationAnswers) {
   client.send("POST /heavy HTTP/1.1\r\nHost: test\r\nX-Tag: body\r\nContent-Length: " +
               std::to_string(body.size()) + "\r\n\r\n" + body);
   ASSERT_TRUE(held.gate().wait_inside(1));
-  EXPECT_EQ(held.engine().memory_budget().used(), body.size());
+  EXPECT_EQ(held.engine().memory_budget().used(), kLargeBodyHeldTimes * body.size());
   held.gate().open();
   const testing::ParsedResponses answered = client.read_responses(1);
   ASSERT_EQ(answered.finals(), 1U) << client.bytes();
