@@ -1,6 +1,8 @@
 #include "api/machine_time/program_machine_time.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -39,21 +41,65 @@ void append_line(std::string& program, const std::string& line) {
   }
 }
 
-}  // namespace
+// A program's text with `line` appended as append_line does, passed on piece by piece: the last
+// bytes of each piece are held back until the end is known.
+class WithLastLine final : public domain::TextSource {
+ public:
+  WithLastLine(std::unique_ptr<domain::TextSource> program, std::string line)
+      : program_(std::move(program)), line_(std::move(line)) {}
 
-std::optional<Problem> add_machine_time(JsonWithText& answer,
-                                        const program::MachineRequest& machine, Dialect dialect) {
-  if (!machine.timing) return std::nullopt;
-  // The time is known once the whole program is: it is written at once here, not as it is sent.
-  write_whole(answer);
-  const std::string& text = answer.json.at("program").get_ref<const std::string&>();
+  bool write_next(std::string& out, std::size_t max_bytes) override {
+    if (!program_) return false;
+    std::string piece = std::move(held_);
+    held_.clear();
+    if (program_->write_next(piece, max_bytes)) {
+      const std::size_t keep = std::min<std::size_t>(piece.size(), 2);  // "%\n"
+      held_.assign(piece, piece.size() - keep, keep);
+      out.append(piece, 0, piece.size() - keep);
+      return true;
+    }
+    program_.reset();
+    append_line(piece, line_);
+    out.append(piece);
+    return false;
+  }
+  [[nodiscard]] std::size_t held_bytes() const override {
+    return sizeof(*this) + line_.capacity() + held_.capacity() +
+           (program_ ? program_->held_bytes() : 0);
+  }
+
+ private:
+  std::unique_ptr<domain::TextSource> program_;
+  std::string line_;
+  std::string held_;
+};
+
+// The program of the JSON form, timed.
+mt::ProgramTimeOutcome time_text(std::string_view text, const program::MachineRequest& machine,
+                                 Dialect dialect) {
   mt::ProgramTimeParams params;
   params.program = text;
   params.read.dialect = dialect;
   params.read.kind = machine.kind;
   params.read.max_spindle_rpm = machine.limits.max_spindle_rpm.value_or(0.0);
   params.machine = *machine.timing;
-  const mt::ProgramTimeOutcome outcome = mt::time_program(params);
+  return mt::time_program(params);
+}
+
+}  // namespace
+
+std::optional<Problem> add_machine_time(JsonWithText& answer,
+                                        const program::MachineRequest& machine, Dialect dialect) {
+  if (!machine.timing) return std::nullopt;
+  // The time is known once the whole program is: the JSON form's program is written whole and
+  // timed, then sent from that text; the text form is written again as it is sent (its own
+  // comment lines differ), the time's line after it.
+  std::string streamed_text;
+  if (answer.program_source) domain::write_all(*answer.program_source, streamed_text);
+  const std::string& text = answer.program_source
+                                ? streamed_text
+                                : answer.json.at("program").get_ref<const std::string&>();
+  const mt::ProgramTimeOutcome outcome = time_text(text, machine, dialect);
   if (const auto* missing = std::get_if<mt::AxisNotDescribed>(&outcome)) {
     return to_problem(*missing);
   }
@@ -64,8 +110,14 @@ std::optional<Problem> add_machine_time(JsonWithText& answer,
     throw std::logic_error(what);
   }
   const auto& time = std::get<mt::ProgramTime>(outcome);
-  append_line(answer.text, time_comment(time, dialect));
   answer.json["machine_time"] = to_json(time);
+  if (answer.program_source) {
+    answer.program_source = std::make_unique<domain::StringSource>(std::move(streamed_text));
+    answer.text_source =
+        std::make_unique<WithLastLine>(std::move(answer.text_source), time_comment(time, dialect));
+  } else {
+    append_line(answer.text, time_comment(time, dialect));
+  }
   return std::nullopt;
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 
 namespace cutcalc::domain {
 
@@ -25,5 +26,17 @@ class TextSource {
 
 // The whole rest of `source` appended to `out` (a caller that needs the text at once).
 void write_all(TextSource& source, std::string& out);
+
+// A text that is already whole, handed out in pieces.
+class StringSource final : public TextSource {
+ public:
+  explicit StringSource(std::string text) : text_(std::move(text)) {}
+  bool write_next(std::string& out, std::size_t max_bytes) override;
+  [[nodiscard]] std::size_t held_bytes() const override { return sizeof(*this) + text_.capacity(); }
+
+ private:
+  std::string text_;
+  std::size_t sent_ = 0;
+};
 
 }  // namespace cutcalc::domain
