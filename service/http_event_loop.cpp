@@ -230,13 +230,16 @@ class EventLoopEngine::Loop {
   }
   Loop(const Loop&) = delete;
   Loop& operator=(const Loop&) = delete;
-  ~Loop() {
+  ~Loop() { stop(); }
+
+  // Closes every connection and ends the thread; what the pool posts afterwards is dropped.
+  void stop() {
     {
       const std::lock_guard lock(inbox_mutex_);
       quit_ = true;
     }
     wake();
-    thread_.join();
+    if (thread_.joinable()) thread_.join();
   }
 
   // From any thread: the loop takes the connection over.
@@ -983,8 +986,11 @@ EventLoopEngine::EventLoopEngine(EventLoopSettings settings, Serve serve, Render
   pool_ = std::make_unique<WorkPool>(settings_.pool, counters_.calculations);
 }
 
-// The pool first: its last jobs post their answers to loops that must still exist.
+// The loops' threads first, so that none hands the pool more work (a calculation, the next piece
+// of a program being sent) while it goes; then the pool, whose last jobs post to loops that still
+// exist and drop what they post; then the loops.
 EventLoopEngine::~EventLoopEngine() {
+  for (const auto& loop : loops_) loop->stop();
   pool_.reset();
   loops_.clear();
 }

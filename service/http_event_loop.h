@@ -131,7 +131,8 @@ class EventLoopEngine {
                   ConnectionCounters& counters);
   EventLoopEngine(const EventLoopEngine&) = delete;
   EventLoopEngine& operator=(const EventLoopEngine&) = delete;
-  // Finishes the pool's work, then closes every connection and joins the loops.
+  // Closes every connection (stopping the calculations in flight) and joins the loops, then lets
+  // the pool finish its jobs. drain() first answers what is in flight.
   ~EventLoopEngine();
 
   // Takes ownership of a connected socket (TCP, or any stream socket). Never blocks.
@@ -160,7 +161,7 @@ class EventLoopEngine {
   std::atomic<std::uint64_t> next_connection_id_{1};
   MemoryBudget budget_;                       // charged by the connections: outlives them
   std::vector<std::unique_ptr<Loop>> loops_;  // their threads use everything above
-  std::unique_ptr<WorkPool> pool_;            // its jobs post to the loops: goes first
+  std::unique_ptr<WorkPool> pool_;            // its jobs post to the loops (see the destructor)
 };
 
 }  // namespace cutcalc::service
