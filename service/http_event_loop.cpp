@@ -452,11 +452,16 @@ class EventLoopEngine::Loop {
       if (done) close(fd);
       return;
     }
-    // Waiting for the pool, only the client's going is news: a failed socket, or the end of its
-    // input (as nginx takes it: TCP cannot tell a half-close from a close before a write).
-    if ((connection.awaiting || connection.stream_producing) &&
-        (events & (EPOLLHUP | EPOLLERR | EPOLLRDHUP)) != 0) {
+    // Waiting for a calculation, only the client's going is news: a failed socket, or the end of
+    // its input (as nginx takes it: TCP cannot tell a half-close from a close before a write).
+    if (connection.awaiting && (events & (EPOLLHUP | EPOLLERR | EPOLLRDHUP)) != 0) {
       return close(fd);
+    }
+    // A body that has begun is finished unless the socket fails: a client that half-closed after
+    // its request (`nc -N`) still reads, and one that has gone makes the next write fail.
+    if (connection.stream_producing) {
+      if ((events & (EPOLLHUP | EPOLLERR)) != 0) close(fd);
+      return;
     }
     if ((events & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0 && !connection.awaiting &&
         !connection.stream && !connection.has_output() && !connection.last_response &&
@@ -515,10 +520,10 @@ class EventLoopEngine::Loop {
       if (!more) break;  // else serving stopped at the high-water mark: serve on
     }
     if (connection.stream_producing) {
-      // The next piece is being written: as while waiting for the pool, only the client's going
-      // is news.
+      // The next piece is being written: only a failed socket is news (EPOLLHUP and EPOLLERR
+      // are always reported). The client's input waits, its end included, until the body is out.
       connection.deadline = connection.stream_deadline;
-      if (!watch(connection, EPOLLRDHUP)) close(fd);
+      if (!watch(connection, 0)) close(fd);
       return;
     }
     if (connection.awaiting) {

@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "service/http_event_loop.h"
+#include "support/engine_client.h"
 #include "support/gate.h"
 #include "support/http_responses.h"
 #include "support/test_server.h"
@@ -38,10 +39,6 @@ namespace {
 constexpr std::size_t kBigAnswerBytes = 4 * 1024 * 1024;
 constexpr std::uint64_t kSmallBudgetBytes = 1024 * 1024;  // less than a large body
 
-// A safety net against a hang only; no test measures time.
-constexpr auto kPatience = std::chrono::seconds(10);
-constexpr int kPatienceMs = 10000;
-
 using cutcalc::testing::eventually;
 using cutcalc::testing::Gate;
 
@@ -52,80 +49,7 @@ HttpResponse text(int status, std::string body) {
   return response;
 }
 
-// The client's end of a connection the engine adopted.
-class Client {
- public:
-  explicit Client(EventLoopEngine& engine) {
-    int pair[2];
-    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0) return;
-    server_fd_ = pair[0];
-    fd_ = pair[1];
-    engine.adopt(pair[0]);
-  }
-  ~Client() { close(); }
-  Client(const Client&) = delete;
-  Client& operator=(const Client&) = delete;
-
-  [[nodiscard]] int server_fd() const { return server_fd_; }
-  void close() {
-    if (fd_ >= 0) ::close(fd_);
-    fd_ = -1;
-  }
-  void shut_down_writing() const { ::shutdown(fd_, SHUT_WR); }
-  void send(const std::string& bytes) const {
-    std::size_t sent = 0;
-    while (sent < bytes.size()) {
-      const ssize_t n = ::send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL);
-      ASSERT_GT(n, 0);
-      sent += static_cast<std::size_t>(n);
-    }
-  }
-  // Reads until `finals` final responses are in, the peer closes, or the safety net is hit.
-  testing::ParsedResponses read_responses(std::size_t finals) {
-    testing::ParsedResponses parsed;
-    const auto until = std::chrono::steady_clock::now() + kPatience;
-    while (std::chrono::steady_clock::now() < until) {
-      parsed = testing::parse_responses(bytes_);
-      if (!parsed.error && parsed.finals() >= finals) break;
-      if (!read_some(kPatienceMs)) break;
-    }
-    return testing::parse_responses(bytes_);
-  }
-  // Reads until the peer closes; false when the safety net is hit first.
-  bool read_to_close() {
-    const auto until = std::chrono::steady_clock::now() + kPatience;
-    while (std::chrono::steady_clock::now() < until) {
-      if (!read_some(kPatienceMs)) return closed_;
-    }
-    return false;
-  }
-  // Whatever has arrived without waiting.
-  std::string arrived_now() {
-    read_some(0);
-    return bytes_;
-  }
-  [[nodiscard]] const std::string& bytes() const { return bytes_; }
-
- private:
-  // False on close, error or nothing within `timeout_ms`.
-  bool read_some(int timeout_ms) {
-    pollfd watched{fd_, POLLIN, 0};
-    if (::poll(&watched, 1, timeout_ms) <= 0) return false;
-    char buffer[4096];
-    const ssize_t n = ::recv(fd_, buffer, sizeof(buffer), MSG_DONTWAIT);
-    if (n <= 0) {
-      closed_ = n == 0;
-      return false;
-    }
-    bytes_.append(buffer, static_cast<std::size_t>(n));
-    return true;
-  }
-
-  int fd_ = -1;
-  int server_fd_ = -1;
-  std::string bytes_;
-  bool closed_ = false;
-};
+using Client = testing::EngineClient;
 
 std::string request(const std::string& method, const std::string& path,
                     const std::string& extra = {}) {

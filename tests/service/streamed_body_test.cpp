@@ -19,6 +19,7 @@
 
 #include "domain/common/text_source.h"
 #include "service/http_event_loop.h"
+#include "support/engine_client.h"
 #include "support/gate.h"
 #include "support/http_responses.h"
 
@@ -26,7 +27,6 @@ namespace cutcalc::service {
 namespace {
 
 constexpr std::size_t kPieceBytes = 64 * 1024;  // what the engine asks for at a time
-constexpr int kPatienceMs = 10000;              // a safety net against a hang only
 
 // What a test can see of a source the engine owns.
 struct SourceLog {
@@ -116,73 +116,7 @@ class StreamingEngine {
   std::unique_ptr<EventLoopEngine> engine_;
 };
 
-// The client's end of a socketpair the engine adopted.
-class Client {
- public:
-  explicit Client(EventLoopEngine& engine) {
-    int pair[2];
-    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0) return;
-    fd_ = pair[1];
-    engine.adopt(pair[0]);
-  }
-  ~Client() { close(); }
-  Client(const Client&) = delete;
-  Client& operator=(const Client&) = delete;
-
-  void close() {
-    if (fd_ >= 0) ::close(fd_);
-    fd_ = -1;
-  }
-  void send(const std::string& bytes) const {
-    ASSERT_EQ(::send(fd_, bytes.data(), bytes.size(), MSG_NOSIGNAL),
-              static_cast<ssize_t>(bytes.size()));
-  }
-  // Reads until `finals` well-framed final responses are in, or the peer closes.
-  testing::ParsedResponses read_responses(std::size_t finals) {
-    while (true) {
-      const testing::ParsedResponses parsed = testing::parse_responses(bytes_);
-      if (!parsed.error && parsed.finals() >= finals) return parsed;
-      if (!read_some()) return parsed;
-    }
-  }
-  // Reads `bytes` at most, then waits `pause`, until the peer closes.
-  void read_slowly(std::size_t bytes, std::chrono::milliseconds pause) {
-    std::string buffer(bytes, '\0');
-    for (;;) {
-      pollfd watched{fd_, POLLIN, 0};
-      if (::poll(&watched, 1, kPatienceMs) <= 0) return;
-      const ssize_t n = ::recv(fd_, buffer.data(), buffer.size(), MSG_DONTWAIT);
-      if (n <= 0) return;
-      bytes_.append(buffer.data(), static_cast<std::size_t>(n));
-      std::this_thread::sleep_for(pause);
-    }
-  }
-  // Reads until the peer closes; false when the safety net is hit first.
-  bool read_to_close() {
-    while (read_some()) {
-    }
-    return closed_;
-  }
-  [[nodiscard]] const std::string& bytes() const { return bytes_; }
-
- private:
-  bool read_some() {
-    pollfd watched{fd_, POLLIN, 0};
-    if (::poll(&watched, 1, kPatienceMs) <= 0) return false;
-    char buffer[65536];
-    const ssize_t n = ::recv(fd_, buffer, sizeof(buffer), MSG_DONTWAIT);
-    if (n <= 0) {
-      closed_ = n == 0;
-      return false;
-    }
-    bytes_.append(buffer, static_cast<std::size_t>(n));
-    return true;
-  }
-
-  int fd_ = -1;
-  std::string bytes_;
-  bool closed_ = false;
-};
+using Client = testing::EngineClient;
 
 std::string stream_request(std::size_t size, const std::string& version = "HTTP/1.1",
                            const std::string& extra = {}) {
@@ -268,6 +202,22 @@ TEST(StreamedBody, AStalledReaderIsClosedAtTheWriteTimeout) {
   Client client(served.engine());
   client.send(stream_request(std::size_t{1} << 30));  // never read
   EXPECT_TRUE(testing::eventually([&] { return served.log()->destroyed.load(); }));
+}
+
+// A client that half-closed after its request (`nc -N`) still reads: a body that has begun is
+// finished, then the connection closes.
+TEST(StreamedBody, AHalfCloseDoesNotCutABodyThatHasBegun) {
+  StreamingEngine served;
+  Client client(served.engine());
+  const std::size_t size = 64 * kPieceBytes;  // far more than the socket's buffers
+  client.send(stream_request(size));
+  ASSERT_TRUE(testing::eventually([&] { return served.log()->calls.load() > 0; }));
+  client.shut_down_writing();
+  ASSERT_TRUE(client.read_to_close());
+  const testing::ParsedResponses parsed = testing::parse_responses(client.bytes());
+  ASSERT_FALSE(parsed.error) << *parsed.error;
+  ASSERT_EQ(parsed.finals(), 1U);
+  EXPECT_EQ(parsed.responses[0].body, pattern(size));
 }
 
 TEST(StreamedBody, ASourceThatThrowsCutsTheBodyShortAndCloses) {
