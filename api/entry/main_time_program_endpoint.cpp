@@ -25,8 +25,7 @@ HandlerOutcome handle_main_time_program(const nlohmann::json& body) {
     return to_problem(written.error(), kEntryErrorPointers);
   }
   const model::PassProgram& program = written.value();
-  nlohmann::json json = {{"program", program.program},
-                         {"file_name", program.file_name},
+  nlohmann::json json = {{"file_name", program.file_name},
                          {"dialect", model::dialect_name(options.dialect)},
                          {"units", model::units_name(options.units)},
                          {"passes", program.passes},
@@ -38,7 +37,11 @@ HandlerOutcome handle_main_time_program(const nlohmann::json& body) {
                          {"not_modelled", program.not_modelled},
                          {"warnings", program::to_json(program.warnings)},
                          {"main_time", main_time_json(main_time.value(), limits)}};
-  JsonWithText answer{std::move(json), program.program, program.file_name, {}, {}};
+  JsonWithText answer{std::move(json),
+                      {},
+                      program.file_name,
+                      model::open_program_text(program),
+                      model::open_program_text(program)};
   if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
     return std::move(*problem);
   }

@@ -133,12 +133,15 @@ HandlerOutcome handle_grooving_cycle(const nlohmann::json& body) {
   const model::GroovingProgram& program = written.value();
   nlohmann::json json = to_json(cycle.value());
   json["warnings"] = program::to_json(program.warnings);
-  json["program"] = program.program;
   json["file_name"] = program.file_name;
   json["dialect"] = domain::program::dialect_name(options.dialect);
   json["units"] = domain::program::units_name(options.units);
   json["decimals"] = domain::program::decimals_of(options);
-  JsonWithText answer{std::move(json), program.program, program.file_name, {}, {}};
+  JsonWithText answer{std::move(json),
+                      {},
+                      program.file_name,
+                      model::open_program_text(program),
+                      model::open_program_text(program)};
   if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
     return std::move(*problem);
   }

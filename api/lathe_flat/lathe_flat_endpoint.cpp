@@ -149,12 +149,15 @@ HandlerOutcome handle_lathe_flat(const nlohmann::json& body) {
     return to_problem(written.error(), pointers);
   }
   nlohmann::json json = to_json(flat.value());
-  json["program"] = written.value().program;
   json["file_name"] = written.value().file_name;
   json["dialect"] = domain::program::dialect_name(options.dialect);
   json["units"] = domain::program::units_name(options.units);
   json["decimals"] = domain::program::decimals_of(options);
-  JsonWithText answer{std::move(json), written.value().program, written.value().file_name, {}, {}};
+  JsonWithText answer{std::move(json),
+                      {},
+                      written.value().file_name,
+                      model::open_program_text(written.value()),
+                      model::open_program_text(written.value())};
   if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
     return std::move(*problem);
   }

@@ -1,5 +1,8 @@
 #include "domain/grooving/grooving_program.h"
 
+#include <memory>
+#include <utility>
+
 #include "domain/program/lathe_program.h"
 
 namespace cutcalc::domain::grooving {
@@ -14,6 +17,7 @@ using program::Dialect;
 using program::Dwell;
 using program::fanuc_spindle_words;
 using program::file_name;
+using program::lathe_program_error;
 using program::LatheBlock;
 using program::LatheFeed;
 using program::LatheModalLines;
@@ -24,7 +28,6 @@ using program::SpindleOff;
 using program::Units;
 using program::Warning;
 using program::WarningCode;
-using program::write_lathe_program;
 
 constexpr LatheModalLines kModalLines{
     "{units} G18 G7 G90 G40 G49 G80 G95",  // G7: X is a diameter; G95: feed per revolution
@@ -83,18 +86,29 @@ Result<GroovingProgram> write_grooving_program(const GroovingCycleParams& params
                             "a Fanuc S word takes no decimals: v and n are rounded half up, the "
                             "G50 limit down (times use the exact values)"});
   }
-  LatheProgram program;
+  auto written = std::make_shared<LatheProgram>();
+  LatheProgram& program = *written;
   program.modal = kModalLines;
   program.comments.emplace_back("CUTCALC GROOVING CYCLE V RAZVOD");
   for (const Warning& warning : out.warnings) {
     program.comments.emplace_back(warning_name(warning.code));
   }
   program.blocks = blocks(params, cycle, spindle, options);
-  auto text = write_lathe_program(program, options);
-  if (!text.ok()) return text.error();
-  out.program = std::move(text.value());
+  if (auto error = lathe_program_error(program, options)) return std::move(*error);
+  out.program = std::move(written);
+  out.options = options;
   out.file_name = file_name(options);
   return out;
+}
+
+std::unique_ptr<TextSource> open_program_text(const GroovingProgram& program) {
+  return program::open_lathe_program(program.program, program.options);
+}
+
+std::string program_text(const GroovingProgram& program) {
+  std::string text;
+  write_all(*open_program_text(program), text);
+  return text;
 }
 
 }  // namespace cutcalc::domain::grooving

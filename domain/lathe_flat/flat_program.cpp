@@ -1,6 +1,8 @@
 #include "domain/lathe_flat/flat_program.h"
 
 #include <cctype>
+#include <memory>
+#include <utility>
 
 #include "domain/common/numeric.h"
 #include "domain/program/dialect_writer.h"
@@ -15,6 +17,7 @@ using program::FeedModeChange;
 using program::file_name;
 using program::format_fixed;
 using program::InverseTimeFeed;
+using program::lathe_program_error;
 using program::LatheBlock;
 using program::LatheFeed;
 using program::LatheModalLines;
@@ -23,7 +26,6 @@ using program::LatheRapid;
 using program::ProgramOptions;
 using program::to_program_units;
 using program::Warning;
-using program::write_lathe_program;
 
 constexpr LatheModalLines kModalLines{
     "{units} G18 G90 G40 G49 G80 G94 G7",
@@ -97,7 +99,8 @@ Result<FlatProgram> write_flat_program(const LatheFlatParams& params, const Lath
   if (!every_step_prints_a_move(flat, options)) {
     return make_error(ErrorCode::steps_below_resolution);
   }
-  LatheProgram program;
+  auto written = std::make_shared<LatheProgram>();
+  LatheProgram& program = *written;
   program.modal = kModalLines;
   program.comments = {"CUTCALC LATHE FLAT",
                       "C AXIS: SPINDLE IN POSITION MODE AND DRIVEN TOOL RUNNING BEFORE THIS "
@@ -106,9 +109,18 @@ Result<FlatProgram> write_flat_program(const LatheFlatParams& params, const Lath
     program.comments.push_back("WARNING " + upper(warning_name(warning.code)));
   }
   program.blocks = blocks(params, flat);
-  auto text = write_lathe_program(program, options);
-  if (!text.ok()) return text.error();
-  return FlatProgram{std::move(text.value()), file_name(options)};
+  if (auto error = lathe_program_error(program, options)) return std::move(*error);
+  return FlatProgram{std::move(written), options, file_name(options)};
+}
+
+std::unique_ptr<TextSource> open_program_text(const FlatProgram& program) {
+  return program::open_lathe_program(program.program, program.options);
+}
+
+std::string program_text(const FlatProgram& program) {
+  std::string text;
+  write_all(*open_program_text(program), text);
+  return text;
 }
 
 }  // namespace cutcalc::domain::lathe_flat

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
+#include <memory>
+#include <utility>
 
 #include "domain/common/interruption.h"
 
@@ -19,25 +21,51 @@ std::string cat(std::initializer_list<std::string_view> parts) {
   return out;
 }
 
-class Writer {
+// Section 3's text of a model, written as it is read: the header, the blocks from the next one on
+// (the last printed F carried from block to block), the end.
+class ProgramWriter final : public TextSource {
  public:
-  Writer(const ProgramOptions& options)
-      : options_(options), decimals_(decimals_of(options)), words_(words_of(options.dialect)) {}
+  ProgramWriter(std::shared_ptr<const ProgramModel> model, ProgramOptions options)
+      : model_(std::move(model)),
+        options_(std::move(options)),
+        decimals_(decimals_of(options_)),
+        words_(words_of(options_.dialect)) {}
 
-  std::string write(const ProgramModel& model) {
-    header(model);
-    for (const Block& block : model.blocks) {
-      interruption_point();
-      std::visit([this](const auto& b) { this->block(b); }, block);
+  bool write_next(std::string& text, std::size_t max_bytes) override {
+    // Every block writes a line: at least one byte unless the text has ended.
+    const std::size_t until = text.size() + std::max<std::size_t>(max_bytes, 1);
+    text_ = &text;
+    switch (part_) {
+      case Part::header:
+        text += program_header(model_->comments, options_);
+        part_ = Part::blocks;
+        [[fallthrough]];
+      case Part::blocks:
+        for (; next_ < model_->blocks.size(); ++next_) {
+          if (text.size() >= until) return true;
+          interruption_point();
+          std::visit([this](const auto& b) { this->block(b); }, model_->blocks[next_]);
+        }
+        text += program_end(options_);
+        part_ = Part::done;
+        return false;
+      case Part::done:
+        break;
     }
-    end();
-    return std::move(text_);
+    return false;
+  }
+
+  [[nodiscard]] std::size_t held_bytes() const override {
+    return sizeof(*this) + options_.name.capacity() + last_feed_.capacity() +
+           program::held_bytes(*model_);
   }
 
  private:
+  enum class Part { header, blocks, done };
+
   void line(std::string_view text) {
-    text_.append(text);
-    text_.push_back('\n');
+    text_->append(text);
+    text_->push_back('\n');
   }
   std::string number(double mm) const {
     return format_fixed(to_program_units(mm, options_.units), decimals_);
@@ -50,9 +78,7 @@ class Writer {
     return out;
   }
 
-  void header(const ProgramModel& model) { text_ += program_header(model.comments, options_); }
-  void end() { text_ += program_end(options_); }
-  void block(const SafeStart& start) { text_ += safe_start_text(start, options_); }
+  void block(const SafeStart& start) { *text_ += safe_start_text(start, options_); }
   void block(const Rapid& rapid) { line(cat({words_.rapid, axes(rapid.to)})); }
   void block(const Feed& feed) {
     std::string text = cat({words_.feed, axes(feed.to)});
@@ -75,11 +101,14 @@ class Writer {
   }
   void block(const CoolantOff&) { line(words_.coolant_off); }
 
-  const ProgramOptions& options_;
+  std::shared_ptr<const ProgramModel> model_;
+  ProgramOptions options_;
   int decimals_;
   const DialectWords& words_;
-  std::string text_;
-  std::string last_feed_;  // printed; empty before the first feed move
+  Part part_ = Part::header;
+  std::size_t next_ = 0;         // the next block to write
+  std::string last_feed_;        // printed; empty before the first feed move
+  std::string* text_ = nullptr;  // the text write_next appends to
 };
 
 }  // namespace
@@ -227,8 +256,24 @@ std::string program_end(const ProgramOptions& options) {
   return options.dialect == Dialect::sinumerik ? "M30\n" : "M30\n%\n";
 }
 
+std::size_t held_bytes(const ProgramModel& model) {
+  std::size_t bytes = sizeof(model) + model.comments.capacity() * sizeof(std::string) +
+                      model.blocks.capacity() * sizeof(Block);
+  for (const std::string& comment : model.comments) bytes += comment.capacity();
+  return bytes;
+}
+
+std::unique_ptr<TextSource> open_program(std::shared_ptr<const ProgramModel> model,
+                                         ProgramOptions options) {
+  return std::make_unique<ProgramWriter>(std::move(model), std::move(options));
+}
+
 std::string write_program(const ProgramModel& model, const ProgramOptions& options) {
-  return Writer(options).write(model);
+  // The model outlives the source here: held without being owned.
+  const std::shared_ptr<const ProgramModel> unowned(std::shared_ptr<const ProgramModel>(), &model);
+  std::string text;
+  write_all(*open_program(unowned, options), text);
+  return text;
 }
 
 std::string comment_text(std::string_view text, Dialect dialect) {

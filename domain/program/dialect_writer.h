@@ -5,11 +5,14 @@
 // the tool length offset and the S word take the dialect's form; an F word is written only when
 // its printed value changes.
 
+#include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "domain/common/text_source.h"
 #include "domain/program/program_model.h"
 #include "domain/program/program_options.h"
 
@@ -54,8 +57,13 @@ double to_program_units(double mm, Units units);
 // The S word's number: fanuc an integer (round half up), the others with `decimals`.
 std::string spindle_text(double rpm, Dialect dialect, int decimals);
 
-// Section 3: the whole program text, LF line ends.
+// Section 3: the program text of `model`, LF line ends, written as it is read (block by block).
+std::unique_ptr<TextSource> open_program(std::shared_ptr<const ProgramModel> model,
+                                         ProgramOptions options);
+// The whole text of open_program.
 std::string write_program(const ProgramModel& model, const ProgramOptions& options);
+// What `model` holds, in bytes (for a memory budget).
+std::size_t held_bytes(const ProgramModel& model);
 
 // A comment line's text in the dialect's rules (fanuc: upper case; no parentheses, semicolons
 // or percent signs inside any comment).

@@ -1,7 +1,10 @@
 #include "domain/program/lathe_program.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string_view>
+#include <utility>
 
 #include "domain/common/interruption.h"
 #include "domain/program/dialect_writer.h"
@@ -10,29 +13,43 @@
 namespace cutcalc::domain::program {
 namespace {
 
-class LatheWriter {
+// The words of a lathe program's parts. With no text to write to (`text_` null), a block only
+// prints the words that must not print as zero: the check before the first byte is written.
+class LatheWords {
  public:
-  explicit LatheWriter(const ProgramOptions& options)
+  explicit LatheWords(const ProgramOptions& options)
       : options_(options), decimals_(decimals_of(options)), words_(words_of(options.dialect)) {}
 
-  Result<std::string> write(const LatheProgram& program) {
-    header(program);
-    for (const LatheBlock& block : program.blocks) {
-      interruption_point();
-      std::visit([this](const auto& b) { this->block(b); }, block);
-      if (zero_word_) {
-        return make_error(ErrorCode::word_prints_as_zero,
-                          std::string(zero_word_) + " would print as zero with these decimals");
-      }
+  // The start and name line(s), the comments, the modal lines, the work offset, the tool call.
+  void header(const LatheProgram& program, std::string& text) {
+    text_ = &text;
+    text += program_start(program.comments, options_);
+    const char* modal = options_.dialect == Dialect::fanuc       ? program.modal.fanuc
+                        : options_.dialect == Dialect::sinumerik ? program.modal.sinumerik
+                                                                 : program.modal.linuxcnc;
+    std::string lines = modal;
+    if (const auto at = lines.find("{units}"); at != std::string::npos) {
+      lines.replace(at, std::string_view("{units}").size(), lathe_units_word(options_));
     }
-    text_ += program_end(options_);
-    return std::move(text_);
+    line(lines);
+    text += work_offset_line(options_);
+    if (options_.tool_number) line(lathe_tool_call(*options_.tool_number, options_.dialect));
   }
+
+  // The block's line(s) appended to `text`, or with `text` null only its words checked.
+  void block(const LatheBlock& block, std::string* text) {
+    text_ = text;
+    std::visit([this](const auto& b) { this->block(b); }, block);
+  }
+
+  // The first word that printed as zero, or null.
+  [[nodiscard]] const char* zero_word() const { return zero_word_; }
+  [[nodiscard]] std::size_t held_bytes() const { return last_feed_.capacity(); }
 
  private:
   void line(std::string_view text) {
-    text_.append(text);
-    text_.push_back('\n');
+    text_->append(text);
+    text_->push_back('\n');
   }
   // A word's number, remembering the word when it prints as zero.
   std::string checked(const char* word, std::string printed) {
@@ -50,24 +67,14 @@ class LatheWriter {
     return out;
   }
 
-  void header(const LatheProgram& program) {
-    text_ += program_start(program.comments, options_);
-    const char* modal = options_.dialect == Dialect::fanuc       ? program.modal.fanuc
-                        : options_.dialect == Dialect::sinumerik ? program.modal.sinumerik
-                                                                 : program.modal.linuxcnc;
-    std::string lines = modal;
-    if (const auto at = lines.find("{units}"); at != std::string::npos) {
-      lines.replace(at, std::string_view("{units}").size(), lathe_units_word(options_));
-    }
-    line(lines);
-    text_ += work_offset_line(options_);
-    if (options_.tool_number) line(lathe_tool_call(*options_.tool_number, options_.dialect));
+  void block(const LatheRapid& rapid) {
+    if (text_ == nullptr) return;
+    line(std::string(words_.rapid) + point(rapid.to));
   }
-
-  void block(const LatheRapid& rapid) { line(std::string(words_.rapid) + point(rapid.to)); }
   void block(const LatheFeed& feed) {
-    std::string text = std::string(words_.feed) + point(feed.to);
     const std::string f = checked("F", length(feed.feed_mm));
+    if (text_ == nullptr) return;
+    std::string text = std::string(words_.feed) + point(feed.to);
     if (f != last_feed_) {
       text.append(" F").append(f);
       last_feed_ = f;
@@ -75,18 +82,21 @@ class LatheWriter {
     line(text);
   }
   void block(const FeedModeChange& change) {
+    if (text_ == nullptr) return;
     line(change.mode == FeedMode::inverse_time ? "G93" : "G94");
     last_feed_.clear();
   }
   void block(const InverseTimeFeed& feed) {
-    line(std::string(words_.feed) + point(feed.to) + " F" +
-         checked("F", format_fixed(feed.per_minute, decimals_)));
+    const std::string f = checked("F", format_fixed(feed.per_minute, decimals_));
+    if (text_ == nullptr) return;
+    line(std::string(words_.feed) + point(feed.to) + " F" + f);
   }
   void block(const ConstantSpindleSpeed& spindle) {
-    const std::string s = options_.dialect == Dialect::fanuc
-                              ? format_fixed(fanuc_spindle_words(spindle).s, 0)
-                              : format_fixed(spindle.rpm, decimals_);
-    line("G97 S" + checked("S", s) + " " + words_.spindle_on);
+    const std::string s = checked("S", options_.dialect == Dialect::fanuc
+                                           ? format_fixed(fanuc_spindle_words(spindle).s, 0)
+                                           : format_fixed(spindle.rpm, decimals_));
+    if (text_ == nullptr) return;
+    line("G97 S" + s + " " + words_.spindle_on);
   }
   void block(const ConstantSurfaceSpeed& spindle) {
     const double v =
@@ -94,36 +104,95 @@ class LatheWriter {
     switch (options_.dialect) {
       case Dialect::fanuc: {
         const FanucSpindleWords words = fanuc_spindle_words(spindle, options_.units);
-        line("G50 S" + checked("G50 S", format_fixed(words.clamp_rpm.value_or(0.0), 0)));
-        line("G96 S" + checked("S", format_fixed(words.s, 0)) + " " + words_.spindle_on);
+        const std::string clamp = checked("G50 S", format_fixed(words.clamp_rpm.value_or(0.0), 0));
+        const std::string s = checked("S", format_fixed(words.s, 0));
+        if (text_ == nullptr) return;
+        line("G50 S" + clamp);
+        line("G96 S" + s + " " + words_.spindle_on);
         return;
       }
-      case Dialect::sinumerik:
-        line("G96 S" + checked("S", format_fixed(v, decimals_)) + " LIMS=" +
-             checked("LIMS", format_fixed(spindle.max_rpm, decimals_)) + " " + words_.spindle_on);
+      case Dialect::sinumerik: {
+        const std::string s = checked("S", format_fixed(v, decimals_));
+        const std::string lims = checked("LIMS", format_fixed(spindle.max_rpm, decimals_));
+        if (text_ == nullptr) return;
+        line("G96 S" + s + " LIMS=" + lims + " " + words_.spindle_on);
         return;
-      case Dialect::linuxcnc:
-        line("G96 D" + checked("D", format_fixed(spindle.max_rpm, decimals_)) + " S" +
-             checked("S", format_fixed(v, decimals_)) + " " + words_.spindle_on);
+      }
+      case Dialect::linuxcnc: {
+        const std::string d = checked("D", format_fixed(spindle.max_rpm, decimals_));
+        const std::string s = checked("S", format_fixed(v, decimals_));
+        if (text_ == nullptr) return;
+        line("G96 D" + d + " S" + s + " " + words_.spindle_on);
         return;
+      }
     }
   }
   void block(const Dwell& dwell) {
-    line(std::string(lathe_facts(options_.dialect).dwell_word) +
-         checked("G4", format_fixed(dwell.seconds, kDwellDecimals)));
+    const std::string seconds = checked("G4", format_fixed(dwell.seconds, kDwellDecimals));
+    if (text_ == nullptr) return;
+    line(std::string(lathe_facts(options_.dialect).dwell_word) + seconds);
   }
-  void block(const SpindleOff&) { line(words_.spindle_off); }
+  void block(const SpindleOff&) {
+    if (text_ != nullptr) line(words_.spindle_off);
+  }
   void block(const CoolantOn& on) {
-    line(on.coolant == Coolant::mist ? words_.mist : words_.flood);
+    if (text_ != nullptr) line(on.coolant == Coolant::mist ? words_.mist : words_.flood);
   }
-  void block(const CoolantOff&) { line(words_.coolant_off); }
+  void block(const CoolantOff&) {
+    if (text_ != nullptr) line(words_.coolant_off);
+  }
 
   const ProgramOptions& options_;
   int decimals_;
   const DialectWords& words_;
-  std::string text_;
-  std::string last_feed_;  // printed; empty before the first feed move
+  std::string* text_ = nullptr;  // where the lines go; null: words checked only
+  std::string last_feed_;        // printed; empty before the first feed move
   const char* zero_word_ = nullptr;
+};
+
+// A lathe program's text, written as it is read: the header, the blocks from the next one on, the
+// end. Its words were checked first (lathe_program_error): none prints as zero.
+class LatheProgramWriter final : public TextSource {
+ public:
+  LatheProgramWriter(std::shared_ptr<const LatheProgram> program, ProgramOptions options)
+      : program_(std::move(program)), options_(std::move(options)), words_(options_) {}
+
+  bool write_next(std::string& text, std::size_t max_bytes) override {
+    // Every block writes a line: at least one byte unless the text has ended.
+    const std::size_t until = text.size() + std::max<std::size_t>(max_bytes, 1);
+    switch (part_) {
+      case Part::header:
+        words_.header(*program_, text);
+        part_ = Part::blocks;
+        [[fallthrough]];
+      case Part::blocks:
+        for (; next_ < program_->blocks.size(); ++next_) {
+          if (text.size() >= until) return true;
+          interruption_point();
+          words_.block(program_->blocks[next_], &text);
+        }
+        text += program_end(options_);
+        part_ = Part::done;
+        return false;
+      case Part::done:
+        break;
+    }
+    return false;
+  }
+
+  [[nodiscard]] std::size_t held_bytes() const override {
+    return sizeof(*this) + options_.name.capacity() + words_.held_bytes() +
+           program::held_bytes(*program_);
+  }
+
+ private:
+  enum class Part { header, blocks, done };
+
+  std::shared_ptr<const LatheProgram> program_;
+  ProgramOptions options_;
+  LatheWords words_;  // refers to options_
+  Part part_ = Part::header;
+  std::size_t next_ = 0;  // the next block to write
 };
 
 }  // namespace
@@ -149,9 +218,41 @@ FanucSpindleWords fanuc_spindle_words(const ConstantSurfaceSpeed& spindle, Units
   return words;
 }
 
+std::optional<DomainError> lathe_program_error(const LatheProgram& program,
+                                               const ProgramOptions& options) {
+  LatheWords words(options);
+  for (const LatheBlock& block : program.blocks) {
+    interruption_point();
+    words.block(block, nullptr);
+    if (const char* word = words.zero_word()) {
+      return make_error(ErrorCode::word_prints_as_zero,
+                        std::string(word) + " would print as zero with these decimals");
+    }
+  }
+  return std::nullopt;
+}
+
+std::unique_ptr<TextSource> open_lathe_program(std::shared_ptr<const LatheProgram> program,
+                                               ProgramOptions options) {
+  return std::make_unique<LatheProgramWriter>(std::move(program), std::move(options));
+}
+
 Result<std::string> write_lathe_program(const LatheProgram& program,
                                         const ProgramOptions& options) {
-  return LatheWriter(options).write(program);
+  if (auto error = lathe_program_error(program, options)) return std::move(*error);
+  // The program outlives the source here: held without being owned.
+  const std::shared_ptr<const LatheProgram> unowned(std::shared_ptr<const LatheProgram>(),
+                                                    &program);
+  std::string text;
+  write_all(*open_lathe_program(unowned, options), text);
+  return text;
+}
+
+std::size_t held_bytes(const LatheProgram& program) {
+  std::size_t bytes = sizeof(program) + program.comments.capacity() * sizeof(std::string) +
+                      program.blocks.capacity() * sizeof(LatheBlock);
+  for (const std::string& comment : program.comments) bytes += comment.capacity();
+  return bytes;
 }
 
 }  // namespace cutcalc::domain::program

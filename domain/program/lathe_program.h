@@ -6,12 +6,15 @@
 // converts them to the program's units and prints them in the dialect's words, from one table of
 // lathe dialect facts (lathe_dialect.h).
 
+#include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "domain/common/result.h"
+#include "domain/common/text_source.h"
 #include "domain/program/program_model.h"
 #include "domain/program/program_options.h"
 
@@ -75,10 +78,22 @@ struct LatheProgram {
 // Dwell times are printed with 3 decimals in every dialect and unit (seconds).
 inline constexpr int kDwellDecimals = 3;
 
-// The whole text, LF line ends. C words and inverse-time F are printed unconverted (degrees, 1/min)
-// with `decimals`. Error word_prints_as_zero when an F, S, D, LIMS or G50 S value, or a dwell,
-// would print as zero (a control would stop the feed or the spindle, or reject the block).
+// Error word_prints_as_zero when an F, S, D, LIMS or G50 S value, or a dwell, would print as zero
+// (a control would stop the feed or the spindle, or reject the block): the first such word in the
+// program's order; else nullopt. A program is checked before its text is opened.
+std::optional<DomainError> lathe_program_error(const LatheProgram& program,
+                                               const ProgramOptions& options);
+
+// The text of a checked program (lathe_program_error), LF line ends, written as it is read (block
+// by block). C words and inverse-time F are printed unconverted (degrees, 1/min) with `decimals`.
+std::unique_ptr<TextSource> open_lathe_program(std::shared_ptr<const LatheProgram> program,
+                                               ProgramOptions options);
+
+// The check, then the whole text of open_lathe_program.
 Result<std::string> write_lathe_program(const LatheProgram& program, const ProgramOptions& options);
+
+// What `program` holds, in bytes (for a memory budget).
+std::size_t held_bytes(const LatheProgram& program);
 
 // The Fanuc S words of a spindle block: integers (v and n round half up; n_max floors, never above
 // the limit); the values in the program's units (G96 in ft/min under G20).

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <utility>
 
 #include "domain/common/numeric.h"
 #include "domain/program/dialect_writer.h"
@@ -150,7 +152,8 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
     }
   }
 
-  ProgramModel model;
+  auto written = std::make_shared<ProgramModel>();
+  ProgramModel& model = *written;
   model.comments = {
       "CUTCALC PASS PROGRAM", header_comment(main_time, passes.size() * levels, options),
       std::string("PROGRAM UNITS ") + (options.units == Units::inch ? "INCH" : "MM") +
@@ -221,9 +224,20 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
   out.cycle_time_min = out.working_time_min + out.plunge_time_min + out.rapid_time_min;  // G11
   out.not_modelled = {"acceleration", "tool_change", "spindle_and_coolant_start",
                       "first_positioning_move", "non_linear_rapids"};
-  out.program = write_program(model, options);
+  out.model = std::move(written);
+  out.options = options;
   out.file_name = file_name(options);
   return out;
+}
+
+std::unique_ptr<TextSource> open_program_text(const PassProgram& program) {
+  return open_program(program.model, program.options);
+}
+
+std::string program_text(const PassProgram& program) {
+  std::string text;
+  write_all(*open_program_text(program), text);
+  return text;
 }
 
 }  // namespace cutcalc::domain::program

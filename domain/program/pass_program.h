@@ -3,11 +3,14 @@
 // (entry-and-main-time.md E24-E36) as a machine program, with the feed switching from S_m1 to S_m2
 // exactly at the end of each entry section, and its times (G8-G11). Units: mm, mm/min, minutes.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "domain/common/result.h"
+#include "domain/common/text_source.h"
 #include "domain/entry/main_time.h"
+#include "domain/program/program_model.h"
 #include "domain/program/program_options.h"
 
 namespace cutcalc::domain::program {
@@ -16,7 +19,9 @@ namespace cutcalc::domain::program {
 inline constexpr double kMaxProgramBlocks = 200000;
 
 struct PassProgram {
-  std::string program;                    // LF line ends
+  // The program, LF line ends: its text is written as it is read (open_program_text).
+  std::shared_ptr<const ProgramModel> model;
+  ProgramOptions options;                 // what the text is written with
   std::string file_name;                  // section 3 table
   int passes = 0;                         // N1 x N2
   double working_time_min = 0.0;          // G8 (= main_time_min, E35)
@@ -33,6 +38,11 @@ struct PassProgram {
 Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
                                        const entry::MainTimeResult& main_time,
                                        const ProgramOptions& options, const MachineLimits& limits);
+
+// The program's text, written as it is read.
+std::unique_ptr<TextSource> open_program_text(const PassProgram& program);
+// The whole text of open_program_text.
+std::string program_text(const PassProgram& program);
 
 // The feeds a main-time setup uses (S_m1, S_m2, the finishing S_m1f and S_m2f; the program adds its
 // plunge feeds), for the limit

@@ -38,6 +38,11 @@ GroovingProgram program_of(const GroovingCycleParams& p, const ProgramOptions& o
   return out.ok() ? out.value() : GroovingProgram{};
 }
 
+// The whole text of a program (none when it was refused).
+std::string text_of(const GroovingProgram& program) {
+  return program.program ? program_text(program) : std::string{};
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
@@ -69,7 +74,7 @@ TEST(GroovingProgram, BlocksFollowSection51AndFeedsPrintOnlyOnChange) {
   ProgramOptions options;
   options.coolant = Coolant::flood;
   const GroovingProgram out = program_of(small_groove(5), options);
-  EXPECT_EQ(out.program,
+  EXPECT_EQ(text_of(out),
             "%\n"
             "(CUTCALC)\n"
             "(CUTCALC GROOVING CYCLE V RAZVOD)\n"
@@ -97,7 +102,7 @@ TEST(GroovingProgram, BlocksFollowSection51AndFeedsPrintOnlyOnChange) {
 
 TEST(GroovingProgram, FinalShiftPrintsItsFeedAfterAShiftBlockAndGoesToTheOtherSide) {
   // N = 4: the last pattern block is a shift back to z_L at f_sh; the final shift goes to z_R at s.
-  const std::vector<std::string> lines = lines_of(program_of(small_groove(4), {}).program);
+  const std::vector<std::string> lines = lines_of(text_of(program_of(small_groove(4), {})));
   ASSERT_GE(lines.size(), 7U);
   const std::size_t end = lines.size();
   EXPECT_EQ(lines[end - 7], "G1 X49.2000 Z-10.0000 F0.4123");
@@ -105,7 +110,7 @@ TEST(GroovingProgram, FinalShiftPrintsItsFeedAfterAShiftBlockAndGoesToTheOtherSi
   EXPECT_EQ(lines[end - 5], "G1 Z-9.6000 F0.1000");
   EXPECT_EQ(lines[end - 4], "G0 X52.0000");
   // N = 6 ends right: the final shift goes back to z_L.
-  const std::vector<std::string> six = lines_of(program_of(small_groove(6), {}).program);
+  const std::vector<std::string> six = lines_of(text_of(program_of(small_groove(6), {})));
   ASSERT_GE(six.size(), 5U);
   EXPECT_EQ(six[six.size() - 5], "G1 Z-10.0000 F0.1000");
 }
@@ -113,7 +118,7 @@ TEST(GroovingProgram, FinalShiftPrintsItsFeedAfterAShiftBlockAndGoesToTheOtherSi
 TEST(GroovingProgram, NoDwellBlockWithoutDwellRevolutions) {
   GroovingCycleParams p = small_groove(5);
   p.dwell_revolutions = 0.0;
-  const std::string text = program_of(p, {}).program;
+  const std::string text = text_of(program_of(p, {}));
   EXPECT_EQ(text.find("\nG4 "), std::string::npos) << text;
   EXPECT_NE(text.find("G1 X49.0000 F0.1000\nG1 Z-9.6000\n"), std::string::npos) << text;
 }
@@ -126,13 +131,13 @@ TEST(GroovingProgram, FanucHeaderSpindleClampAndDwellAsSection52) {
   options.tool_number = 7;
   options.coolant = Coolant::mist;
   const GroovingProgram out = program_of(with_css(small_groove(5), 86.0, 1000.0), options);
-  EXPECT_EQ(first_lines(out.program, 12),
+  EXPECT_EQ(first_lines(text_of(out), 12),
             (std::vector<std::string>{"%", "O0012 (GROOVE)", "(CUTCALC GROOVING CYCLE V RAZVOD)",
                                       "G21", "G18 G40 G99", "G54", "T0707", "G00 X52.000 Z-10.000",
                                       "G50 S1000", "G96 S86 M03", "M07", "G01 X50.000 F0.100"}));
   // Dwell at Db 49: n = 86000/(pi 49) = 558.66 rpm, 1 rev = 0.107 s.
-  EXPECT_NE(out.program.find("\nG04 X0.107\n"), std::string::npos) << out.program;
-  EXPECT_NE(out.program.find("\nM05\nM09\nM30\n%\n"), std::string::npos) << out.program;
+  EXPECT_NE(text_of(out).find("\nG04 X0.107\n"), std::string::npos) << text_of(out);
+  EXPECT_NE(text_of(out).find("\nM05\nM09\nM30\n%\n"), std::string::npos) << text_of(out);
   EXPECT_EQ(out.file_name, "O0012.nc");
   EXPECT_TRUE(out.warnings.empty());
 }
@@ -146,13 +151,13 @@ TEST(GroovingProgram, SinumerikInchHeaderAndSurfaceSpeedInFeetPerMinute) {
   options.work_offset = 55;
   const GroovingProgram out = program_of(with_css(small_groove(5), 86.0, 1000.0), options);
   // 52/25.4 = 2.04724, -10/25.4 = -0.39370, 86/0.3048 = 282.15223 ft/min; 0.1/25.4 = 0.003937.
-  EXPECT_EQ(first_lines(out.program, 9),
+  EXPECT_EQ(first_lines(text_of(out), 9),
             (std::vector<std::string>{"; GROOVE_1", "; CUTCALC GROOVING CYCLE V RAZVOD",
                                       "G18 G700 G40 G90 G95 DIAMON", "G55", "T3 D1",
                                       "G0 X2.0472 Z-0.3937", "G96 S282.1522 LIMS=1000.0000 M3",
                                       "G1 X1.9685 F0.0039", "G1 X1.9606"}));
-  EXPECT_NE(out.program.find("\nG4 F0.107\n"), std::string::npos) << out.program;
-  EXPECT_NE(out.program.find("\nG0 X2.0472\nM5\nM30\n"), std::string::npos) << out.program;
+  EXPECT_NE(text_of(out).find("\nG4 F0.107\n"), std::string::npos) << text_of(out);
+  EXPECT_NE(text_of(out).find("\nG0 X2.0472\nM5\nM30\n"), std::string::npos) << text_of(out);
   EXPECT_EQ(out.file_name, "GROOVE_1.MPF");
 }
 
@@ -161,7 +166,7 @@ TEST(GroovingProgram, LinuxcncInchHeaderAndConstantSpeedLine) {
   options.units = Units::inch;
   options.tool_number = 12;
   const GroovingProgram out = program_of(small_groove(5), options);
-  EXPECT_EQ(first_lines(out.program, 8),
+  EXPECT_EQ(first_lines(text_of(out), 8),
             (std::vector<std::string>{"%", "(CUTCALC)", "(CUTCALC GROOVING CYCLE V RAZVOD)",
                                       "G20 G18 G7 G90 G40 G49 G80 G95", "G54", "T12 M6 G43",
                                       "G0 X2.04724 Z-0.39370", "G97 S500.00000 M3"}));
@@ -174,17 +179,17 @@ TEST(GroovingProgram, WarningsBecomeCommentLinesUpperCaseOnFanuc) {
   const GroovingProgram linuxcnc = program_of(p, {});
   EXPECT_EQ(codes(linuxcnc), (std::vector{WarningCode::shift_outside_paper_range,
                                           WarningCode::pattern_not_repeated}));
-  EXPECT_EQ(first_lines(linuxcnc.program, 5),
+  EXPECT_EQ(first_lines(text_of(linuxcnc), 5),
             (std::vector<std::string>{"%", "(CUTCALC)", "(CUTCALC GROOVING CYCLE V RAZVOD)",
                                       "(shift_outside_paper_range)", "(pattern_not_repeated)"}));
   ProgramOptions fanuc;
   fanuc.dialect = Dialect::fanuc;
-  EXPECT_EQ(first_lines(program_of(p, fanuc).program, 5),
+  EXPECT_EQ(first_lines(text_of(program_of(p, fanuc)), 5),
             (std::vector<std::string>{"%", "O0001 (CUTCALC)", "(CUTCALC GROOVING CYCLE V RAZVOD)",
                                       "(SHIFT_OUTSIDE_PAPER_RANGE)", "(PATTERN_NOT_REPEATED)"}));
   ProgramOptions sinumerik;
   sinumerik.dialect = Dialect::sinumerik;
-  EXPECT_EQ(first_lines(program_of(p, sinumerik).program, 4),
+  EXPECT_EQ(first_lines(text_of(program_of(p, sinumerik)), 4),
             (std::vector<std::string>{"; CUTCALC", "; CUTCALC GROOVING CYCLE V RAZVOD",
                                       "; shift_outside_paper_range", "; pattern_not_repeated"}));
 }
@@ -200,15 +205,15 @@ TEST(GroovingProgram, FanucAloneWarnsThatItsSpindleWordsWereRounded) {
        {with_css(small_groove(5), 86.4, 1000.0), with_css(small_groove(5), 86.0, 1000.5)}) {
     const GroovingProgram out = program_of(p, fanuc);
     EXPECT_EQ(codes(out), std::vector{WarningCode::spindle_speed_rounded});
-    EXPECT_NE(out.program.find("(SPINDLE_SPEED_ROUNDED)\n"), std::string::npos);
-    EXPECT_NE(out.program.find("\nG50 S1000\nG96 S86 M03\n"), std::string::npos) << out.program;
+    EXPECT_NE(text_of(out).find("(SPINDLE_SPEED_ROUNDED)\n"), std::string::npos);
+    EXPECT_NE(text_of(out).find("\nG50 S1000\nG96 S86 M03\n"), std::string::npos) << text_of(out);
     EXPECT_TRUE(program_of(p, {}).warnings.empty());  // linuxcnc prints the decimals
   }
   GroovingCycleParams g97 = small_groove(5);
   g97.spindle.spindle_speed_rpm = 500.5;
   const GroovingProgram rounded = program_of(g97, fanuc);
   EXPECT_EQ(codes(rounded), std::vector{WarningCode::spindle_speed_rounded});
-  EXPECT_NE(rounded.program.find("\nG97 S501 M03\n"), std::string::npos) << rounded.program;
+  EXPECT_NE(text_of(rounded).find("\nG97 S501 M03\n"), std::string::npos) << text_of(rounded);
   // Last, after the cycle's own warnings.
   g97.shift_mm = 0.6;
   EXPECT_EQ(codes(program_of(g97, fanuc)), (std::vector{WarningCode::shift_outside_paper_range,

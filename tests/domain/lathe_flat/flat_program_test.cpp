@@ -32,7 +32,7 @@ Result<FlatProgram> written(const LatheFlatParams& p, const ProgramOptions& opti
 std::string program_of(const LatheFlatParams& p, const ProgramOptions& options = {}) {
   const auto out = written(p, options);
   EXPECT_TRUE(out.ok()) << (out.ok() ? "" : error_code_name(out.error().code));
-  return out.ok() ? out.value().program : std::string{};
+  return out.ok() ? program_text(out.value()) : std::string{};
 }
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -120,7 +120,7 @@ TEST(FlatProgram, SinumerikHeaderAndEndAsSection64) {
   options.name = "FLAT_1";
   const auto out = written(paper_flat(), options);
   ASSERT_TRUE(out.ok());
-  const std::vector<std::string> lines = lines_of(out.value().program);
+  const std::vector<std::string> lines = lines_of(program_text(out.value()));
   ASSERT_GE(lines.size(), 6U);
   EXPECT_EQ(lines[0], "; FLAT_1");
   EXPECT_EQ(lines[1], "; CUTCALC LATHE FLAT");

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 
 #include "domain/program/lathe_dialect.h"
@@ -233,6 +234,57 @@ TEST(LatheProgramRotary, AnInverseTimeFeedThatPrintsAsZeroIsRefused) {
   program.blocks = {FeedModeChange{FeedMode::inverse_time},
                     InverseTimeFeed{{30.0, std::nullopt, 1.0}, 0.00005}};  // F0.0001
   EXPECT_TRUE(write_lathe_program(program, options_for(Dialect::linuxcnc)).ok());
+}
+
+TEST(LatheProgramText, WrittenPieceByPieceIsTheWholeTextInEveryDialect) {
+  auto program = std::make_shared<LatheProgram>();
+  program->comments = {"A TITLE"};
+  program->modal = kModal;
+  program->blocks = {LatheRapid{{40.0, 2.0}},
+                     ConstantSurfaceSpeed{86.0, 1000.0},
+                     CoolantOn{Coolant::flood},
+                     LatheFeed{{30.0, std::nullopt}, 0.1},
+                     LatheFeed{{29.0, std::nullopt}, 0.1},
+                     FeedModeChange{FeedMode::inverse_time},
+                     InverseTimeFeed{{28.0, std::nullopt, 10.0}, 187.5},
+                     FeedModeChange{FeedMode::per_minute},
+                     LatheFeed{{29.0, std::nullopt}, 0.1},
+                     Dwell{0.5},
+                     ConstantSpindleSpeed{500.0},
+                     SpindleOff{},
+                     CoolantOff{}};
+  for (const Dialect dialect : {Dialect::linuxcnc, Dialect::fanuc, Dialect::sinumerik}) {
+    ProgramOptions options = options_for(dialect);
+    options.tool_number = 3;
+    const auto whole = write_lathe_program(*program, options);
+    ASSERT_TRUE(whole.ok());
+    for (const std::size_t piece : {std::size_t{0}, std::size_t{1}, std::size_t{30}}) {
+      const auto source = open_lathe_program(program, options);
+      EXPECT_GT(source->held_bytes(), 0U);
+      std::string text;
+      std::size_t calls = 0;
+      while (source->write_next(text, piece)) ++calls;
+      EXPECT_EQ(text, whole.value()) << piece;
+      if (piece <= 1) {
+        EXPECT_EQ(calls, program->blocks.size()) << piece;  // a block a piece
+      }
+      EXPECT_FALSE(source->write_next(text, piece));  // ended: nothing more
+      EXPECT_EQ(text.size(), whole.value().size());
+    }
+  }
+}
+
+TEST(LatheProgramErrors, TheFirstWordThatPrintsAsZeroIsNamedBeforeAnyTextIsWritten) {
+  LatheProgram program;
+  program.modal = kModal;
+  program.blocks = {LatheFeed{{1.0, std::nullopt}, 0.1}, Dwell{0.0001},
+                    LatheFeed{{1.0, std::nullopt}, 0.00001}};
+  const auto error = lathe_program_error(program, options_for(Dialect::linuxcnc));
+  ASSERT_TRUE(error.has_value());
+  EXPECT_EQ(error->code, ErrorCode::word_prints_as_zero);
+  EXPECT_EQ(error->detail, "G4 would print as zero with these decimals");
+  program.blocks.resize(1);
+  EXPECT_FALSE(lathe_program_error(program, options_for(Dialect::linuxcnc)).has_value());
 }
 
 TEST(FanucSpindleWords, SpeedsRoundHalfUpAndTheLimitFloors) {

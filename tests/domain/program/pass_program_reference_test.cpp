@@ -132,6 +132,21 @@ TEST(PassProgramReference, EveryCaseExpecting200HasTheReferencesTimesPassesAndNa
     near(got.rapid_time_min, "rapid_time_min");
     near(got.cycle_time_min, "cycle_time_min");
     EXPECT_EQ(got.passes, want.at("passes").get<int>());
+    // Written as it is read, in pieces as small as a byte: the whole text, block by block.
+    const std::string whole = program::program_text(got);
+    for (const std::size_t piece : {std::size_t{0}, std::size_t{1}, std::size_t{100}}) {
+      const auto source = program::open_program_text(got);
+      EXPECT_GT(source->held_bytes(), 0U);
+      std::string text;
+      std::size_t calls = 0;
+      while (source->write_next(text, piece)) ++calls;
+      EXPECT_EQ(text, whole) << piece;
+      if (piece <= 1) {
+        EXPECT_EQ(calls, got.model->blocks.size()) << piece;  // a block a piece
+      }
+      EXPECT_FALSE(source->write_next(text, piece));  // ended: nothing more
+      EXPECT_EQ(text.size(), whole.size());
+    }
     EXPECT_EQ(got.file_name, want.at("file_name").get<std::string>());
     if (c.at("expect").contains("warning_codes")) {
       std::multiset<std::string> codes;
