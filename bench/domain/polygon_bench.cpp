@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "domain/polygon/polygon_hole.h"
+#include "domain/program/program_options.h"
 
 namespace {
 
@@ -54,5 +55,26 @@ void BM_PolygonHoleTriangleD20HalfMicron(benchmark::State& state) {
   run(state, params);
 }
 BENCHMARK(BM_PolygonHoleTriangleD20HalfMicron)->Unit(benchmark::kMicrosecond);
+
+// The largest fit the API accepts: N = 3, d = 1e6, 0.1 um (m = 538, 3223 blocks per loop) with a
+// Fanuc program at 6 decimals, so the printed-path deviation runs too. The program text is
+// streamed later: this is the time before the first byte of the answer.
+void BM_PolygonHoleLargestProgramFit(benchmark::State& state) {
+  polygon::PolygonHoleParams params;
+  params.faces = 3;
+  params.inscribed_diameter_mm = 1e6;
+  params.depth_mm = 1.0;
+  params.step_down_mm = 1.0;
+  params.spindle_speed_rpm = 30.0;
+  params.tolerance_mm = 0.0001;
+  params.loops_per_layer = 62;
+  params.synchronization = polygon::Synchronization::c_axis;
+  cutcalc::domain::program::ProgramOptions program;
+  program.dialect = cutcalc::domain::program::Dialect::fanuc;
+  program.decimals = 6;
+  params.program = program;
+  run(state, params);
+}
+BENCHMARK(BM_PolygonHoleLargestProgramFit)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -64,13 +64,6 @@ CentrePath::CentrePath(const PolygonShape& shape) : shape_(shape) {
   }
 }
 
-const CentrePath::Frame& CentrePath::frame(int p) const {
-  const int index = ((p % shape_.N) + shape_.N) % shape_.N;
-  return frames_[static_cast<std::size_t>(index)];
-}
-
-int CentrePath::phase_of(double t) const { return static_cast<int>(std::floor(t / shape_.delta)); }
-
 // P7: c = V_p - A cos(psi) w_p - B sin(psi) t_p, psi = theta - delta/2.
 Eigen::Vector2d CentrePath::point_in_phase(int p, double theta) const {
   const Frame& f = frame(p);
@@ -78,17 +71,20 @@ Eigen::Vector2d CentrePath::point_in_phase(int p, double theta) const {
   return f.V - shape_.A * std::cos(psi) * f.w - shape_.B * std::sin(psi) * f.t;
 }
 
-// P7
-Eigen::Vector2d CentrePath::point_at_psi(int p, double cos_psi, double sin_psi) const {
-  const Frame& f = frame(p);
-  return f.V - shape_.A * cos_psi * f.w - shape_.B * sin_psi * f.t;
-}
-
 // P8: c' = A sin(psi) w_p - B cos(psi) t_p.
 Eigen::Vector2d CentrePath::velocity_in_phase(int p, double theta) const {
   const Frame& f = frame(p);
   const double psi = theta - 0.5 * shape_.delta;
   return shape_.A * std::sin(psi) * f.w - shape_.B * std::cos(psi) * f.t;
+}
+
+// P7, P8: the expressions of point_in_phase and velocity_in_phase.
+CentrePath::PointAndVelocity CentrePath::point_and_velocity_in_phase(int p, double theta) const {
+  const Frame& f = frame(p);
+  const double psi = theta - 0.5 * shape_.delta;
+  const double c = std::cos(psi);
+  const double s = std::sin(psi);
+  return {f.V - shape_.A * c * f.w - shape_.B * s * f.t, shape_.A * s * f.w - shape_.B * c * f.t};
 }
 
 // P8: c'' = A cos(psi) w_p + B sin(psi) t_p.
