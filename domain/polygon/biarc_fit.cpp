@@ -14,6 +14,7 @@
 #include <string>
 
 #include "domain/common/interruption.h"
+#include "domain/polygon/small_angle.h"
 
 namespace cutcalc::domain::polygon::detail {
 
@@ -157,19 +158,6 @@ double nearer_arc_distance(const Biarc& biarc, const Eigen::Vector2d& P) {
     return std::min(a.distance(biarc.first.radius), d2);
   }
   return std::min(a.distance(biarc.first.radius), b.distance(biarc.second.radius));
-}
-
-// sin x and 1 - cos x for |x| <= 0.1 by their Taylor polynomials (truncation below 1e-18).
-double sin_small(double x) {
-  constexpr double c3 = -1.0 / 6.0, c5 = 1.0 / 120.0, c7 = -1.0 / 5040.0, c9 = 1.0 / 362880.0;
-  const double x2 = x * x;
-  return x + x * x2 * (c3 + x2 * (c5 + x2 * (c7 + x2 * c9)));
-}
-double one_minus_cos_small(double x) {
-  constexpr double c2 = 1.0 / 2.0, c4 = -1.0 / 24.0, c6 = 1.0 / 720.0, c8 = -1.0 / 40320.0,
-                   c10 = 1.0 / 3628800.0;
-  const double x2 = x * x;
-  return x2 * (c2 + x2 * (c4 + x2 * (c6 + x2 * (c8 + x2 * c10))));
 }
 
 // The squared distance f(theta) = |point_in_phase(0, theta) - J|^2 as a value with an error

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "domain/common/interruption.h"
+#include "domain/polygon/small_angle.h"
 
 // The deviation is the largest of about 650 distances per block (3223 blocks for the largest
 // request), each a sine and cosine and an atan2 or a search over 48 segments. It is computed here
@@ -44,9 +45,6 @@ constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2.0;
 constexpr double kRoundoffMultiple = 128.0;
 // Tier A's subintervals of a phase piece (see PhasePiece::squared_radius_gap_bounds).
 constexpr int kSubintervals = 16;
-// Largest |x| (rad) of the Taylor expansions of sin and 1 - cos below; at 0.1 their truncation is
-// 1e-19 relative.
-constexpr double kMaxExpansion = 0.1;
 
 // The printed numbers are [-]digits[.digits] with 13 digits at most: for up to 15 digits,
 // mantissa / 10^k, both exact doubles, is correctly rounded by the one division, exactly as
@@ -187,20 +185,6 @@ double exact_block_deviation(const Block& block, ExactPoints& exact) {
   return worst;
 }
 
-// sin x and 1 - cos x for |x| <= kMaxExpansion by their Taylor polynomials (coefficients as
-// products: a division by a constant is not turned into one).
-double sin_small(double x) {
-  constexpr double c3 = -1.0 / 6.0, c5 = 1.0 / 120.0, c7 = -1.0 / 5040.0, c9 = 1.0 / 362880.0;
-  const double x2 = x * x;
-  return x + x * x2 * (c3 + x2 * (c5 + x2 * (c7 + x2 * c9)));
-}
-double one_minus_cos_small(double x) {
-  constexpr double c2 = 1.0 / 2.0, c4 = -1.0 / 24.0, c6 = 1.0 / 720.0, c8 = -1.0 / 40320.0,
-                   c10 = 1.0 / 3628800.0;
-  const double x2 = x * x;
-  return x2 * (c2 + x2 * (c4 + x2 * (c6 + x2 * (c8 + x2 * c10))));
-}
-
 // The exact path over the part of a block in one phase, about psi_c, relative to the printed
 // centre C, in mm: p(psi_c + x) - C = P + sin(x) D1 + (1 - cos x) D2 exactly (P7), with
 // D1 = p'(psi_c) and D2 = p''(psi_c); every derivative of p is +-D1 or +-D2 at psi_c.
@@ -334,7 +318,7 @@ BlockModel analyse_block(const CentrePath& path, double d_mm, const Block& block
   const PrintedArc& arc = block.arc;
   const PolygonShape& shape = path.shape();
   const double T = block.t1 - block.t0;
-  if (!(T > 0.0) || !(arc.sweep <= 2.0 * kMaxExpansion) || !(arc.r0 > 0.0) || !(arc.r1 > 0.0)) {
+  if (!(T > 0.0) || !(arc.sweep <= 2.0 * kMaxSmallAngle) || !(arc.r0 > 0.0) || !(arc.r1 > 0.0)) {
     return model;
   }
   // The phases of the samples (non-decreasing in j): at most one phase change is covered.
@@ -379,7 +363,7 @@ BlockModel analyse_block(const CentrePath& path, double d_mm, const Block& block
     piece.psi_c = 0.5 * (psi_lo + psi_hi);
     piece.x_lo = psi_lo - piece.psi_c;
     piece.x_hi = psi_hi - piece.psi_c;
-    if (!(piece.half_width() <= kMaxExpansion)) {
+    if (!(piece.half_width() <= kMaxSmallAngle)) {
       return model;
     }
     const CentrePath::Frame& frame = path.frame(piece.phase);

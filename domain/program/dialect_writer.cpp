@@ -9,7 +9,7 @@
 #include <memory>
 #include <utility>
 
-#include "domain/common/interruption.h"
+#include "domain/program/block_list_writer.h"
 
 namespace cutcalc::domain::program {
 namespace {
@@ -23,7 +23,7 @@ std::string cat(std::initializer_list<std::string_view> parts) {
 
 // Section 3's text of a model, written as it is read: the header, the blocks from the next one on
 // (the last printed F carried from block to block), the end.
-class ProgramWriter final : public TextSource {
+class ProgramWriter final : public BlockListWriter {
  public:
   ProgramWriter(std::shared_ptr<const ProgramModel> model, ProgramOptions options)
       : model_(std::move(model)),
@@ -31,37 +31,21 @@ class ProgramWriter final : public TextSource {
         decimals_(decimals_of(options_)),
         words_(words_of(options_.dialect)) {}
 
-  bool write_next(std::string& text, std::size_t max_bytes) override {
-    // Every block writes a line: at least one byte unless the text has ended.
-    const std::size_t until = text.size() + std::max<std::size_t>(max_bytes, 1);
-    text_ = &text;
-    switch (part_) {
-      case Part::header:
-        text += program_header(model_->comments, options_);
-        part_ = Part::blocks;
-        [[fallthrough]];
-      case Part::blocks:
-        for (; next_ < model_->blocks.size(); ++next_) {
-          if (text.size() >= until) return true;
-          interruption_point();
-          std::visit([this](const auto& b) { this->block(b); }, model_->blocks[next_]);
-        }
-        text += program_end(options_);
-        part_ = Part::done;
-        return false;
-      case Part::done:
-        break;
-    }
-    return false;
-  }
-
   [[nodiscard]] std::size_t held_bytes() const override {
     return sizeof(*this) + options_.name.capacity() + last_feed_.capacity() +
            program::held_bytes(*model_);
   }
 
  private:
-  enum class Part { header, blocks, done };
+  void write_header(std::string& text) override {
+    text += program_header(model_->comments, options_);
+  }
+  [[nodiscard]] std::size_t block_count() const override { return model_->blocks.size(); }
+  void write_block(std::size_t index, std::string& text) override {
+    text_ = &text;
+    std::visit([this](const auto& b) { this->block(b); }, model_->blocks[index]);
+  }
+  void write_end(std::string& text) override { text += program_end(options_); }
 
   void line(std::string_view text) {
     text_->append(text);
@@ -105,10 +89,8 @@ class ProgramWriter final : public TextSource {
   ProgramOptions options_;
   int decimals_;
   const DialectWords& words_;
-  Part part_ = Part::header;
-  std::size_t next_ = 0;         // the next block to write
   std::string last_feed_;        // printed; empty before the first feed move
-  std::string* text_ = nullptr;  // the text write_next appends to
+  std::string* text_ = nullptr;  // the text write_block appends to
 };
 
 }  // namespace

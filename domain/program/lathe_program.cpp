@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "domain/common/interruption.h"
+#include "domain/program/block_list_writer.h"
 #include "domain/program/dialect_writer.h"
 #include "domain/program/lathe_dialect.h"
 
@@ -152,33 +153,10 @@ class LatheWords {
 
 // A lathe program's text, written as it is read: the header, the blocks from the next one on, the
 // end. Its words were checked first (lathe_program_error): none prints as zero.
-class LatheProgramWriter final : public TextSource {
+class LatheProgramWriter final : public BlockListWriter {
  public:
   LatheProgramWriter(std::shared_ptr<const LatheProgram> program, ProgramOptions options)
       : program_(std::move(program)), options_(std::move(options)), words_(options_) {}
-
-  bool write_next(std::string& text, std::size_t max_bytes) override {
-    // Every block writes a line: at least one byte unless the text has ended.
-    const std::size_t until = text.size() + std::max<std::size_t>(max_bytes, 1);
-    switch (part_) {
-      case Part::header:
-        words_.header(*program_, text);
-        part_ = Part::blocks;
-        [[fallthrough]];
-      case Part::blocks:
-        for (; next_ < program_->blocks.size(); ++next_) {
-          if (text.size() >= until) return true;
-          interruption_point();
-          words_.block(program_->blocks[next_], &text);
-        }
-        text += program_end(options_);
-        part_ = Part::done;
-        return false;
-      case Part::done:
-        break;
-    }
-    return false;
-  }
 
   [[nodiscard]] std::size_t held_bytes() const override {
     return sizeof(*this) + options_.name.capacity() + words_.held_bytes() +
@@ -186,13 +164,16 @@ class LatheProgramWriter final : public TextSource {
   }
 
  private:
-  enum class Part { header, blocks, done };
+  void write_header(std::string& text) override { words_.header(*program_, text); }
+  [[nodiscard]] std::size_t block_count() const override { return program_->blocks.size(); }
+  void write_block(std::size_t index, std::string& text) override {
+    words_.block(program_->blocks[index], &text);
+  }
+  void write_end(std::string& text) override { text += program_end(options_); }
 
   std::shared_ptr<const LatheProgram> program_;
   ProgramOptions options_;
   LatheWords words_;  // refers to options_
-  Part part_ = Part::header;
-  std::size_t next_ = 0;  // the next block to write
 };
 
 }  // namespace
