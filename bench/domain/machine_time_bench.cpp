@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "bench/domain/bench_support.h"
 #include "domain/machine_time/program_time.h"
 #include "domain/polygon/polygon_hole.h"
 
@@ -19,23 +20,9 @@ namespace polygon = cutcalc::domain::polygon;
 
 const std::string& largest_polygon_program() {
   static const std::string text = [] {
-    polygon::PolygonHoleParams params;
-    params.faces = 3;
-    params.inscribed_diameter_mm = 1e6;
-    params.depth_mm = 1.0;
-    params.step_down_mm = 1.0;
-    params.spindle_speed_rpm = 30.0;
-    params.tolerance_mm = 0.0001;
-    params.loops_per_layer = 62;
-    params.synchronization = polygon::Synchronization::c_axis;
-    cutcalc::domain::program::ProgramOptions options;
-    options.decimals = 6;
-    params.program = options;
-    auto result = polygon::generate_polygon_hole(params);
-    if (!result.ok()) {
-      std::cerr << "polygon hole: unexpected error\n";
-      std::abort();
-    }
+    const auto result = polygon::generate_polygon_hole(
+        cutcalc::bench::largest_polygon_program(cutcalc::domain::program::Dialect::linuxcnc));
+    cutcalc::bench::require_ok(result, "polygon hole");
     return polygon::program_text(result.value(), true);
   }();
   return text;

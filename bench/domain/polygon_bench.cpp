@@ -3,9 +3,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
-#include <iostream>
-
+#include "bench/domain/bench_support.h"
 #include "domain/polygon/polygon_hole.h"
 #include "domain/program/program_options.h"
 
@@ -26,10 +24,7 @@ polygon::PolygonHoleParams square_a16(polygon::Synchronization synchronization) 
 }
 
 void run(benchmark::State& state, const polygon::PolygonHoleParams& params) {
-  if (!polygon::generate_polygon_hole(params).ok()) {
-    std::cerr << "polygon hole: unexpected error\n";
-    std::abort();
-  }
+  cutcalc::bench::require_ok(polygon::generate_polygon_hole(params), "polygon hole");
   for (auto _ : state) {
     auto result = polygon::generate_polygon_hole(params);
     benchmark::DoNotOptimize(result);
@@ -60,20 +55,7 @@ BENCHMARK(BM_PolygonHoleTriangleD20HalfMicron)->Unit(benchmark::kMicrosecond);
 // Fanuc program at 6 decimals, so the printed-path deviation runs too. The program text is
 // streamed later: this is the time before the first byte of the answer.
 void BM_PolygonHoleLargestProgramFit(benchmark::State& state) {
-  polygon::PolygonHoleParams params;
-  params.faces = 3;
-  params.inscribed_diameter_mm = 1e6;
-  params.depth_mm = 1.0;
-  params.step_down_mm = 1.0;
-  params.spindle_speed_rpm = 30.0;
-  params.tolerance_mm = 0.0001;
-  params.loops_per_layer = 62;
-  params.synchronization = polygon::Synchronization::c_axis;
-  cutcalc::domain::program::ProgramOptions program;
-  program.dialect = cutcalc::domain::program::Dialect::fanuc;
-  program.decimals = 6;
-  params.program = program;
-  run(state, params);
+  run(state, cutcalc::bench::largest_polygon_program(cutcalc::domain::program::Dialect::fanuc));
 }
 BENCHMARK(BM_PolygonHoleLargestProgramFit)->Unit(benchmark::kMillisecond);
 

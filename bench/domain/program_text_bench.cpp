@@ -17,25 +17,9 @@ namespace program = cutcalc::domain::program;
 
 constexpr std::size_t kPieceBytes = 64 * 1024;  // service/http_event_loop.cpp
 
-polygon::PolygonHoleParams largest_program() {
-  polygon::PolygonHoleParams params;
-  params.faces = 3;
-  params.inscribed_diameter_mm = 1000000.0;
-  params.depth_mm = 1.0;
-  params.step_down_mm = 1.0;
-  params.spindle_speed_rpm = 30.0;
-  params.tolerance_mm = 0.0001;
-  params.loops_per_layer = 62;
-  params.synchronization = polygon::Synchronization::c_axis;
-  program::ProgramOptions options;
-  options.dialect = program::Dialect::fanuc;
-  options.decimals = 6;
-  params.program = options;
-  return params;
-}
-
 void BM_PolygonLargestProgramText(benchmark::State& state) {
-  const auto hole = polygon::generate_polygon_hole(largest_program());
+  const auto hole = polygon::generate_polygon_hole(
+      cutcalc::bench::largest_polygon_program(program::Dialect::fanuc));
   cutcalc::bench::require_ok(hole, "largest polygon program");
   std::string piece;
   std::size_t bytes = 0;
