@@ -41,7 +41,7 @@ cd "$(dirname "$0")/.."
 seconds=${CUTCALC_FUZZ_SECONDS:-30}
 engine_seconds=${CUTCALC_FUZZ_ENGINE_SECONDS:-90}
 runs=${CUTCALC_FUZZ_RUNS:-}
-# A hang detector, not a speed limit: the largest legal polygon program (15.8 MB, about 0.35 s in the
+# A hang detector, not a speed limit: the largest legal polygon program (15.8 MB, about 0.1 s in the
 # release service) takes about 4 s here under ASan + UBSan + coverage with the oracle on a busy box.
 timeout=${CUTCALC_FUZZ_TIMEOUT:-30}
 lanes=${CUTCALC_FUZZ_LANES:-$(nproc)}
