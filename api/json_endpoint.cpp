@@ -26,6 +26,10 @@ bool all_numbers_finite(const nlohmann::json& value) {
 }
 
 void write_whole(JsonWithText& answer) {
+  if (answer.members_after_program) {
+    answer.members_after_program(answer.json);
+    answer.members_after_program = nullptr;
+  }
   if (!answer.text_source) return;
   answer.text.clear();
   domain::write_all(*answer.text_source, answer.text);
@@ -99,8 +103,10 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
                          {},
                          {{"Vary", "Accept"}},
                          json_with_streamed_string("program", std::move(document->program_source),
-                                                   document->json)};
+                                                   std::move(document->json),
+                                                   std::move(document->members_after_program))};
     }
+    write_whole(*document);
     nlohmann::json json_form = std::move(document->json);  // moved out before the variant changes
     outcome = std::move(json_form);
     chosen_by_accept = true;

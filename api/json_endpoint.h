@@ -2,6 +2,7 @@
 // The pipeline every JSON calculation endpoint shares: media type -> strict parse -> the
 // endpoint's handler (read fields -> domain -> serialise) -> a response with no NaN or infinity.
 
+#include <functional>
 #include <memory>
 #include <string_view>
 #include <variant>
@@ -36,6 +37,10 @@ struct JsonWithText {
   // the JSON form's "program" member, which then goes first, instead of json["program"].
   std::unique_ptr<domain::TextSource> text_source;
   std::unique_ptr<domain::TextSource> program_source;
+  // Members of the JSON form that no program text needs and that cost time (the polygon's
+  // overcut prediction): added once the program has been written, so the first byte does not
+  // wait for them; the text form never computes them. Empty: none.
+  std::function<void(nlohmann::json&)> members_after_program = nullptr;
 };
 
 // Writes a streamed program whole into `text` and json["program"] (a caller that needs it at once).

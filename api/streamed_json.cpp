@@ -1,7 +1,10 @@
 #include "api/streamed_json.h"
 
+#include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "api/json_endpoint.h"
 
 namespace cutcalc::api {
 namespace {
@@ -41,12 +44,12 @@ void append_escaped(std::string& out, std::string_view text) {
 class StreamedJsonString final : public domain::TextSource {
  public:
   StreamedJsonString(std::string_view key, std::unique_ptr<domain::TextSource> value,
-                     const nlohmann::json& rest)
-      : value_(std::move(value)) {
+                     const nlohmann::json& rest, std::function<void(nlohmann::json&)> after)
+      : value_(std::move(value)), after_(std::move(after)) {
     prefix_ = nlohmann::json(std::string(key)).dump() + ":\"";
     prefix_.insert(prefix_.begin(), '{');
     const std::string members = rest.dump();  // "{...}": the other members, or "{}"
-    suffix_ = members.size() > 2 ? "\"," + members.substr(1) : std::string("\"}");
+    suffix_ = members.size() > 2 ? "\"," + members.substr(1, members.size() - 2) : "\"";
   }
 
   bool write_next(std::string& out, std::size_t max_bytes) override {
@@ -64,6 +67,17 @@ class StreamedJsonString final : public domain::TextSource {
     }
     out.append(suffix_);
     std::string().swap(suffix_);
+    if (after_) {
+      nlohmann::json members = nlohmann::json::object();
+      after_(members);
+      after_ = nullptr;
+      if (!all_numbers_finite(members))
+        throw std::logic_error("a non-finite number after a program");
+      for (const auto& [name, member] : members.items()) {
+        out.append(",").append(nlohmann::json(name).dump()).append(":").append(member.dump());
+      }
+    }
+    out.push_back('}');
     return false;
   }
 
@@ -75,15 +89,17 @@ class StreamedJsonString final : public domain::TextSource {
  private:
   std::string prefix_;
   std::unique_ptr<domain::TextSource> value_;
-  std::string piece_;  // one piece of the value before escaping
-  std::string suffix_;
+  std::string piece_;   // one piece of the value before escaping
+  std::string suffix_;  // the end of the string, then the other members less the closing brace
+  std::function<void(nlohmann::json&)> after_;
 };
 
 }  // namespace
 
 std::unique_ptr<domain::TextSource> json_with_streamed_string(
-    std::string_view key, std::unique_ptr<domain::TextSource> value, const nlohmann::json& rest) {
-  return std::make_unique<StreamedJsonString>(key, std::move(value), rest);
+    std::string_view key, std::unique_ptr<domain::TextSource> value, nlohmann::json rest,
+    std::function<void(nlohmann::json&)> after) {
+  return std::make_unique<StreamedJsonString>(key, std::move(value), rest, std::move(after));
 }
 
 }  // namespace cutcalc::api

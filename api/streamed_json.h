@@ -1,8 +1,11 @@
 #pragma once
 // A JSON object whose first member is a long string written as it is read (a program of many
 // megabytes): `{"<key>":"<the source, escaped>",<the other members>}`. The other members are
-// known before the first byte leaves; only the string streams.
+// known before the first byte leaves, except what `after` adds once the string is written (a
+// member that costs time and that the string does not need). A number `after` makes NaN or
+// infinite cuts the body short (a bug: it cannot become a 500 once the status is sent).
 
+#include <functional>
 #include <memory>
 #include <string_view>
 
@@ -13,6 +16,7 @@
 namespace cutcalc::api {
 
 std::unique_ptr<domain::TextSource> json_with_streamed_string(
-    std::string_view key, std::unique_ptr<domain::TextSource> value, const nlohmann::json& rest);
+    std::string_view key, std::unique_ptr<domain::TextSource> value, nlohmann::json rest,
+    std::function<void(nlohmann::json&)> after = {});
 
 }  // namespace cutcalc::api

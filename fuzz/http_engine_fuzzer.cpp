@@ -151,7 +151,9 @@ std::size_t occurrences(std::string_view text, std::string_view what) {
 }
 
 void check(std::string_view sent, std::string_view received) {
-  const auto parsed = cutcalc::testing::parse_responses(received);
+  // converse() read until the engine closed.
+  const auto parsed =
+      cutcalc::testing::parse_responses(received, cutcalc::testing::ConnectionState::closed);
   if (parsed.error) broken("not well-framed HTTP/1.1: " + *parsed.error, received);
   const std::size_t requests =
       std::min(occurrences(sent, "HTTP/1."), occurrences(sent, "\r\n\r\n")) + 1;
@@ -182,7 +184,8 @@ void check_fresh_connection() {
   constexpr std::string_view kProbe =
       "GET /healthz HTTP/1.1\r\nHost: fuzz\r\nConnection: close\r\n\r\n";
   const std::string received = converse(kProbe, 0);
-  const auto parsed = cutcalc::testing::parse_responses(received);
+  const auto parsed =
+      cutcalc::testing::parse_responses(received, cutcalc::testing::ConnectionState::closed);
   if (parsed.error || parsed.finals() != 1 || parsed.responses.back().status != 200) {
     broken("a fresh connection was not answered 200", received);
   }

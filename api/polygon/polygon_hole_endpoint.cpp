@@ -112,7 +112,6 @@ nlohmann::json to_json(const model::PolygonHoleResult& result) {
           {"feed_per_rev_mm", result.feed_per_rev_mm},
           {"eccentricity_mm", result.eccentricity_mm},
           {"max_path_deviation_mm", result.max_path_deviation_mm},
-          {"predicted_overcut_mm", result.predicted_overcut_mm},
           {"uncut_corner_area_mm2", result.uncut_corner_area_mm2},
           {"corner_gap_mm", result.corner_gap_mm},
           {"max_feed_by_block_rate_mm_per_min", result.max_feed_by_block_rate_mm_per_min},
@@ -188,7 +187,10 @@ HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
                       {},
                       result.value().file_name,
                       model::open_program_text(result.value(), true),
-                      model::open_program_text(result.value(), false)};
+                      model::open_program_text(result.value(), false),
+                      [hole = result.value()](nlohmann::json& members) {
+                        members["predicted_overcut_mm"] = model::predicted_overcut_mm(hole);
+                      }};
   if (auto problem = machine_time::add_machine_time(answer, request.machine, options.dialect)) {
     return std::move(*problem);
   }

@@ -129,7 +129,9 @@ class Lines {
 class BodyWriter final : public TextSource {
  public:
   BodyWriter(std::shared_ptr<const PolygonProgram> program, std::string head)
-      : program_(std::move(program)), head_(std::move(head)) {
+      : program_(std::move(program)),
+        program_bytes_(program_->held_bytes()),
+        head_(std::move(head)) {
     const ProgramLayout& layout = program_->layout;
     const NumberFormat& fmt = program_->style.fmt;
     c_axis_ = layout.synchronization == Synchronization::c_axis;
@@ -164,7 +166,7 @@ class BodyWriter final : public TextSource {
   }
 
   [[nodiscard]] std::size_t held_bytes() const override {
-    return sizeof(*this) + head_.capacity() + program_->held_bytes();
+    return sizeof(*this) + head_.capacity() + program_bytes_;
   }
 
  private:
@@ -257,6 +259,7 @@ class BodyWriter final : public TextSource {
   }
 
   std::shared_ptr<const PolygonProgram> program_;
+  std::size_t program_bytes_;  // the program is immutable: counted once, asked for every piece
   std::string head_;
   bool c_axis_ = false;
   std::string flat_F_;

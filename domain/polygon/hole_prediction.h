@@ -45,6 +45,14 @@ std::vector<MotionSegment> motion_segments(const PolygonShape& shape, const Phas
                                            const std::vector<LoopBlock>& blocks,
                                            Synchronization synchronization);
 
+// P24-P26 of one hole: the unit shape's rotor and motion (d = 1), scaled by d_mm.
+struct OvercutPrediction {
+  PolygonShape unit_shape;
+  Rotor rotor;
+  std::vector<MotionSegment> segments;
+  double d_mm = 0.0;
+};
+
 // P26: penetration(P, phi) = max_j (<P, u_j> + h(alpha_j - phi) - rho).
 double penetration(const PolygonShape& shape, const Rotor& rotor, const Eigen::Vector2d& P,
                    double phi);

@@ -5,6 +5,7 @@
 #include "domain/polygon/polygon_hole.h"
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -88,10 +89,10 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   result.feed_per_rev_mm = (N - 1) * loop.printed_length;
   result.eccentricity_mm = shape_mm.e;
   result.max_path_deviation_mm = fit.value().deviation * d;
-  // P24-P26
-  const auto segments =
-      detail::motion_segments(unit_shape, fit.value(), blocks, params.synchronization);
-  result.predicted_overcut_mm = detail::predicted_overcut(unit_shape, rotor, segments) * d;
+  // P24, P25 (P26 on demand: predicted_overcut_mm)
+  result.overcut = std::make_shared<const detail::OvercutPrediction>(detail::OvercutPrediction{
+      unit_shape, rotor,
+      detail::motion_segments(unit_shape, fit.value(), blocks, params.synchronization), d});
   // P15, P17
   result.uncut_corner_area_mm2 = detail::uncut_area_coefficient(N) * d * d;
   result.corner_gap_mm = detail::corner_gap(shape_mm);
@@ -211,6 +212,13 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   result.program = detail::dialect_program(layout, loop, comments, options);
   result.file_name = program::file_name(options);
   return result;
+}
+
+// P26
+double predicted_overcut_mm(const PolygonHoleResult& result) {
+  const detail::OvercutPrediction& overcut = *result.overcut;
+  return detail::predicted_overcut(overcut.unit_shape, overcut.rotor, overcut.segments) *
+         overcut.d_mm;
 }
 
 std::unique_ptr<TextSource> open_program_text(const PolygonHoleResult& result,

@@ -17,6 +17,7 @@ namespace cutcalc::domain::polygon {
 
 namespace detail {
 struct PolygonProgram;
+struct OvercutPrediction;
 }  // namespace detail
 
 inline constexpr int kMaxBiarcsPerEllipseArc = 1000;      // P21: else tolerance_unreachable
@@ -78,12 +79,14 @@ struct MachiningTime {
 struct PolygonHoleResult {
   // Section 5's program, LF line ends: its text is written as it is read (open_program_text).
   std::shared_ptr<const detail::PolygonProgram> program;
-  int blocks_per_loop = 0;                         // P21
-  double loop_length_mm = 0.0;                     // L_p (P23)
-  double feed_per_rev_mm = 0.0;                    // (N - 1) L_p (P23)
-  double eccentricity_mm = 0.0;                    // e (P5)
-  double max_path_deviation_mm = 0.0;              // P20
-  double predicted_overcut_mm = 0.0;               // P26
+  int blocks_per_loop = 0;             // P21
+  double loop_length_mm = 0.0;         // L_p (P23)
+  double feed_per_rev_mm = 0.0;        // (N - 1) L_p (P23)
+  double eccentricity_mm = 0.0;        // e (P5)
+  double max_path_deviation_mm = 0.0;  // P20
+  // P24-P26, kept from the fit for predicted_overcut_mm(): the prediction samples every block, and
+  // no program text needs it (a JSON answer writes it after the program).
+  std::shared_ptr<const detail::OvercutPrediction> overcut;
   double uncut_corner_area_mm2 = 0.0;              // P17, all N corners
   double corner_gap_mm = 0.0;                      // g (P15)
   double max_feed_by_block_rate_mm_per_min = 0.0;  // P27
@@ -100,6 +103,10 @@ struct PolygonHoleResult {
 // P1-P34. Errors: tolerance_unreachable (m > 1000 biarcs needed), program_too_large (more than
 // 200 000 arc blocks), not_converged (a numerical procedure failed: a bug).
 Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params);
+
+// P26: the largest overcut predicted for the programmed motion, mm (about 7 ms for the largest
+// program; microseconds for a typical one).
+double predicted_overcut_mm(const PolygonHoleResult& result);
 
 // The program's text, written as it is read. `warning_comments`: each warning written as a comment
 // line `(WARNING {code}: {detail})` after the first comment line, for the plain-text answer where

@@ -164,6 +164,12 @@ TEST(StreamedBody, Http10GetsTheBodyUntilTheClose) {
   EXPECT_EQ(head.find("Content-Length"), std::string::npos) << head;
   EXPECT_NE(head.find("Connection: close\r\n"), std::string::npos) << head;
   EXPECT_EQ(bytes.substr(head_end + 4), pattern(size));
+  // Well-framed once the connection has closed (RFC 9112 6.3 rule 8), not before.
+  const auto parsed = testing::parse_responses(bytes, testing::ConnectionState::closed);
+  ASSERT_FALSE(parsed.error) << *parsed.error;
+  ASSERT_EQ(parsed.finals(), 1U);
+  EXPECT_EQ(parsed.responses[0].body, pattern(size));
+  EXPECT_TRUE(testing::parse_responses(bytes).error.has_value());
 }
 
 TEST(StreamedBody, AClientThatDoesNotReadHoldsTheWritingBack) {

@@ -39,7 +39,7 @@ std::size_t ParsedResponses::finals() const {
       responses.begin(), responses.end(), [](const HttpResponse& r) { return !r.interim(); }));
 }
 
-ParsedResponses parse_responses(std::string_view bytes) {
+ParsedResponses parse_responses(std::string_view bytes, ConnectionState connection) {
   ParsedResponses parsed;
   const auto fail = [&](std::string what) {
     parsed.error = what + " (response " + std::to_string(parsed.responses.size() + 1) + ")";
@@ -116,6 +116,14 @@ ParsedResponses parse_responses(std::string_view bytes) {
       if (response.count("content-length") != 0) return fail("Content-Length in a 204");
       parsed.responses.push_back(std::move(response));
       continue;
+    }
+    if (response.count("content-length") == 0 && response.status == 200 &&
+        lower(response.header("connection")) == "close") {
+      if (connection == ConnectionState::open)
+        return fail("a body up to the close, not closed yet");
+      response.body = std::string(bytes);
+      parsed.responses.push_back(std::move(response));
+      return parsed;
     }
     if (response.count("content-length") != 1 || !all_digits(response.header("content-length"))) {
       return fail("not exactly one numeric Content-Length");

@@ -29,11 +29,17 @@ struct ParsedResponses {
   [[nodiscard]] std::size_t finals() const;
 };
 
+// Whether the bytes are all the connection will carry: the server closed it after them.
+enum class ConnectionState { open, closed };
+
 // Every response is "HTTP/1.1 NNN reason" CRLF, field lines, CRLF; a final one carries exactly one
 // Content-Length and no Transfer-Encoding, then that many bytes, or (a 200 written as it is sent)
-// Transfer-Encoding: chunked alone and a whole chunked body, decoded into `body`. A response to
-// HEAD has the Content-Length of the body it does not carry: a final response followed by nothing
-// or by "HTTP/1.1 " is read as bodiless (no cutcalc body starts so).
-ParsedResponses parse_responses(std::string_view bytes);
+// Transfer-Encoding: chunked alone and a whole chunked body, decoded into `body`, or (a 200
+// written as it is sent to an HTTP/1.0 client) neither, with Connection: close, and the body is
+// everything up to the close (RFC 9112 section 6.3, rule 8): only once the connection is closed.
+// A response to HEAD has the Content-Length of the body it does not carry: a final response
+// followed by nothing or by "HTTP/1.1 " is read as bodiless (no cutcalc body starts so).
+ParsedResponses parse_responses(std::string_view bytes,
+                                ConnectionState connection = ConnectionState::open);
 
 }  // namespace cutcalc::testing

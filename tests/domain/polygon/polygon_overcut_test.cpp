@@ -24,6 +24,7 @@ namespace {
 namespace polygon_detail = cutcalc::domain::polygon::detail;
 using cutcalc::domain::ErrorCode;
 using cutcalc::domain::polygon::generate_polygon_hole;
+using cutcalc::domain::polygon::predicted_overcut_mm;
 using cutcalc::test::polygon::generate;
 using cutcalc::test::polygon::hole;
 using cutcalc::test::polygon::PolygonHoleParams;
@@ -73,9 +74,9 @@ TEST(PolygonOvercut, SectionSevenTable) {
     SCOPED_TRACE(testing::Message() << "N " << row.N << " d " << row.d);
     const double g95 =
         1000.0 *
-        generate(hole(row.N, row.d, 0.001, Synchronization::feed_per_rev)).predicted_overcut_mm;
+        predicted_overcut_mm(generate(hole(row.N, row.d, 0.001, Synchronization::feed_per_rev)));
     const double c_axis =
-        1000.0 * generate(hole(row.N, row.d, 0.001, Synchronization::c_axis)).predicted_overcut_mm;
+        1000.0 * predicted_overcut_mm(generate(hole(row.N, row.d, 0.001, Synchronization::c_axis)));
     EXPECT_NEAR(g95, row.feed_per_rev_um, 0.02 * row.feed_per_rev_um + 0.006);
     EXPECT_NEAR(c_axis, row.c_axis_um, 0.02 * row.c_axis_um + 0.006);
   }
@@ -140,7 +141,7 @@ TEST(PolygonOvercut, OneBlockLoopIsTheSameInBothModes) {
     const auto g95 = generate(hole(N, 20.0, 0.001, Synchronization::feed_per_rev));
     const auto c_axis = generate(hole(N, 20.0, 0.001, Synchronization::c_axis));
     ASSERT_EQ(g95.blocks_per_loop, 1);
-    EXPECT_EQ(g95.predicted_overcut_mm, c_axis.predicted_overcut_mm);
+    EXPECT_EQ(predicted_overcut_mm(g95), predicted_overcut_mm(c_axis));
   }
 }
 
@@ -242,7 +243,7 @@ TEST(PolygonRobustness, RandomInputsGiveFiniteResults) {
     const auto& r = result.value();
     for (const double value :
          {r.loop_length_mm, r.feed_per_rev_mm, r.eccentricity_mm, r.max_path_deviation_mm,
-          r.predicted_overcut_mm, r.uncut_corner_area_mm2, r.corner_gap_mm,
+          predicted_overcut_mm(r), r.uncut_corner_area_mm2, r.corner_gap_mm,
           r.max_feed_by_block_rate_mm_per_min}) {
       EXPECT_TRUE(std::isfinite(value));
       EXPECT_GE(value, 0.0);

@@ -19,6 +19,7 @@
 
 namespace {
 
+using cutcalc::domain::polygon::predicted_overcut_mm;
 using cutcalc::test::polygon::arc_lines;
 using cutcalc::test::polygon::Line;
 using cutcalc::test::polygon::parse_program;
@@ -58,7 +59,7 @@ std::optional<double> field(const PolygonHoleResult& r, const std::string& name)
   if (name == "feed_per_rev_mm") return r.feed_per_rev_mm;
   if (name == "eccentricity_mm") return r.eccentricity_mm;
   if (name == "max_path_deviation_mm") return r.max_path_deviation_mm;
-  if (name == "predicted_overcut_mm") return r.predicted_overcut_mm;
+  if (name == "predicted_overcut_mm") return predicted_overcut_mm(r);
   if (name == "uncut_corner_area_mm2") return r.uncut_corner_area_mm2;
   if (name == "corner_gap_mm") return r.corner_gap_mm;
   if (name == "max_feed_by_block_rate_mm_per_min") return r.max_feed_by_block_rate_mm_per_min;
@@ -183,7 +184,7 @@ TEST(PolygonReference, EveryCaseOfTheReferenceFile) {
     const json& info = c["info"];
     for (const auto& [got, name] :
          {std::pair{result.max_path_deviation_mm, "fit_deviation_mm"},
-          std::pair{result.predicted_overcut_mm, "predicted_overcut_mm"},
+          std::pair{predicted_overcut_mm(result), "predicted_overcut_mm"},
           std::pair{result.max_feed_by_block_rate_mm_per_min, "max_feed_by_block_rate_mm_per_min"},
           std::pair{params.spindle_speed_rpm * result.feed_per_rev_mm,
                     "programmed_feed_mm_per_min"}}) {
