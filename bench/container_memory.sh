@@ -187,7 +187,7 @@ stop_container() {
 {
   echo "date: $STAMP"
   echo "host: $(uname -srm), $(nproc) cores, load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "cgroup: $(stat -fc %T /sys/fs/cgroup) at /sys/fs/cgroup ($( [[ -f /sys/fs/cgroup/cgroup.controllers ]] && echo 'v2' || echo 'v1: cutcalc reads only the v2 memory.max, so it does not see the container limit unless --memory-limit-mb is given'))"
+  echo "cgroup: $(stat -fc %T /sys/fs/cgroup) at /sys/fs/cgroup ($( [[ -f /sys/fs/cgroup/cgroup.controllers ]] && echo 'v2' || echo 'v1: cutcalc reads the memory controller'"'"'s memory.limit_in_bytes'))"
   echo "git: $(git -C "$ROOT" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)"
   echo "image: $IMAGE ($(podman image inspect --format '{{.Id}}' "$IMAGE" | cut -c1-12), created $(podman image inspect --format '{{.Created}}' "$IMAGE"))"
   echo "attacks: ${ATTACK_LIST[*]}; never-read 200 over ${SPREAD} s held ${HOLD} s; slow-read 100 at ${RATE} B/s; upload 50 x ${BODY_BYTES} B; answer timeout ${ANSWER_TIMEOUT} s; $([[ $SHARED -eq 1 ]] && echo 'one container' || echo 'a fresh container each')"

@@ -154,9 +154,43 @@ def status_of(head):
         return 0
 
 
+class ChunkedBody:
+    """Walks a chunked body (RFC 9112 7.1) as its bytes arrive, holding no more than a size line:
+    done once the last chunk and the empty trailer are in."""
+
+    def __init__(self):
+        self.line, self.left, self.done, self.last = bytearray(), 0, False, False
+
+    def feed(self, data):
+        i = 0
+        while i < len(data) and not self.done:
+            if self.left > 0:  # chunk data and its CRLF
+                take = min(self.left, len(data) - i)
+                self.left -= take
+                i += take
+                continue
+            end = data.find(b"\n", i)
+            if end < 0:
+                self.line += data[i:]
+                break
+            self.line += data[i:end]
+            i = end + 1
+            line = bytes(self.line).rstrip(b"\r")
+            self.line.clear()
+            if self.last:
+                self.done = line == b""  # the end of the (empty) trailer section
+                continue
+            size = int(line.split(b";")[0] or b"0", 16)
+            if size == 0:
+                self.last = True
+            else:
+                self.left = size + 2
+        return self.done
+
+
 def parse_answer(data, eof):
     """(status, complete, head fields) of the response at the start of `data`: complete once its
-    head and its Content-Length body are in (no Content-Length: at EOF)."""
+    head and its Content-Length body, or its whole chunked body, are in (neither: at EOF)."""
     end = data.find(b"\r\n\r\n")
     if end < 0:
         return status_of(data), False, {}
@@ -167,6 +201,8 @@ def parse_answer(data, eof):
     length = fields.get("content-length")
     if length is not None and length.isdigit():
         return status_of(data), len(data) - end - 4 >= int(length), fields
+    if fields.get("transfer-encoding", "").lower() == "chunked":
+        return status_of(data), ChunkedBody().feed(bytes(data[end + 4:])), fields
     return status_of(data), eof, fields
 
 
@@ -294,7 +330,7 @@ def slow_read(args, payload):
         s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 65536)
         s.settimeout(args.answer_timeout)
         data, got, outcome = bytearray(), 0, None
-        head_end, code, total = -1, 0, None
+        head_end, code, total, chunked = -1, 0, None, None
         try:
             s.sendall(payload)
             start = time.time()
@@ -313,6 +349,12 @@ def slow_read(args, payload):
                         code, _, fields = parse_answer(bytes(data[:head_end + 4]), False)
                         length = fields.get("content-length")
                         total = head_end + 4 + int(length) if length and length.isdigit() else None
+                        if fields.get("transfer-encoding", "").lower() == "chunked":
+                            chunked = ChunkedBody()
+                            chunk = bytes(data[head_end + 4:])
+                if chunked is not None and chunked.feed(chunk):
+                    outcome = code
+                    break
                 if head_end >= 0 and total is not None and got >= total:
                     outcome = code
                     break

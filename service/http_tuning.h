@@ -35,10 +35,8 @@ struct HttpTuning {
   HttpLimits limits;
   std::size_t max_connections = 0;  // beyond: 503; 0: from the memory and descriptor limits
   // What one open connection is budgeted against the memory limit (an idle one costs a few KiB of
-  // kernel and engine state; a busy one its buffers), and what the memory limit keeps back for
-  // everything else (the calculations' programs, the page, the allocator).
+  // kernel and engine state; a busy one its buffers).
   std::size_t connection_memory_bytes = 16 * 1024;
-  std::size_t reserved_memory_bytes = 96 * 1024 * 1024;
   // The memory limit both the connection cap and the memory budget follow: 0, the cgroup's
   // memory.max (without one, kDefaultMemoryLimitBytes for the budget, and no memory bound on the
   // connection cap).
@@ -50,21 +48,30 @@ struct HttpTuning {
 
 // Event loop threads for `tuning` on this machine (resolves event_loop_threads == 0).
 std::size_t effective_event_loop_threads(const HttpTuning& tuning);
-// Open connections allowed. max_connections == 0 resolves to the smaller of what the memory limit
-// (the cgroup's memory.max, `memory_limit_bytes`; none: no bound) holds at connection_memory_bytes
-// each after the reserve, and the soft RLIMIT_NOFILE less a reserve for the listener, logs and the
-// like; at most 65536, at least 1. So at the cap a new connection gets 503, never an OOM kill.
-std::size_t effective_max_connections(const HttpTuning& tuning,
-                                      std::optional<std::uint64_t> memory_limit_bytes);
-std::size_t effective_max_connections(const HttpTuning& tuning);  // this process's memory limit
 inline constexpr std::uint64_t kDefaultMemoryLimitBytes = 256ULL * 1024 * 1024;
 // What the process holds besides the connections, the calculations and the budget: the binary,
 // the page, the allocator's slack.
 inline constexpr std::uint64_t kProcessBaselineBytes = 32ULL * 1024 * 1024;
-// What one calculation may hold while it runs, at most one per pool thread: the largest program's
-// JSON answer took 63 MiB above the idle process (README.md, "Running").
+// What one calculation may hold while it runs, at most one per pool thread: the largest polygon
+// program timed took 48 MiB above the idle process (README.md, "Running").
 inline constexpr std::uint64_t kCalculationPeakBytes = 64ULL * 1024 * 1024;
-inline constexpr std::uint64_t kMinimumMemoryBudgetBytes = 16ULL * 1024 * 1024;
+// The least budget of the requests' work: the largest body a route takes (api::kProgramBodyBytes,
+// 32 MiB) counted at kLargeBodyHeldTimes. With less, that body could never be accepted: every try
+// would be a 503 with Retry-After, forever.
+inline constexpr std::uint64_t kMinimumMemoryBudgetBytes = 64ULL * 1024 * 1024;
+// The least connection cap a memory limit gives: a limit too small for its calculations (a
+// 128 MiB pod with two calculation threads) still takes connections.
+inline constexpr std::size_t kMinimumMemoryConnections = 1024;
+
+// Open connections allowed. max_connections == 0 resolves to the smaller of what the memory limit
+// (the cgroup's, `memory_limit_bytes`; none: no bound) holds at connection_memory_bytes each
+// after the process baseline, a peak per calculation thread and the least work budget (at least
+// kMinimumMemoryConnections), and the soft RLIMIT_NOFILE less a reserve for the listener, logs
+// and the like; at most 65536, at least 1. So at the cap a new connection gets 503, never an OOM
+// kill, and the work budget keeps room for the largest body.
+std::size_t effective_max_connections(const HttpTuning& tuning,
+                                      std::optional<std::uint64_t> memory_limit_bytes,
+                                      std::size_t calculation_threads);
 // The memory budget of the requests' work (service/memory_budget.h): the memory limit (none:
 // kDefaultMemoryLimitBytes) less the process baseline, the calculations running and, under a
 // real limit, what the connection cap lets the connections hold; at least the minimum.

@@ -37,11 +37,11 @@ class SoftFdLimitAtHard {
 
 TEST(ConnectionCap, FollowsTheMemoryLimit) {
   const SoftFdLimitAtHard raised;
-  const HttpTuning tuning;  // 16 KiB a connection, 96 MiB reserved
+  const HttpTuning tuning;  // 16 KiB a connection
   ASSERT_EQ(tuning.max_connections, 0U);
 
   // No memory limit: the descriptor limit less a small reserve decides (at most 65536).
-  const std::size_t by_descriptors = effective_max_connections(tuning, std::nullopt);
+  const std::size_t by_descriptors = effective_max_connections(tuning, std::nullopt, 2);
   rlimit limit{};
   ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &limit), 0);
   if (limit.rlim_cur == RLIM_INFINITY) {
@@ -54,30 +54,34 @@ TEST(ConnectionCap, FollowsTheMemoryLimit) {
   }
   EXPECT_GE(by_descriptors, 1U);
 
-  // 256 MiB: (256 - 96) MiB at 16 KiB each, unless the descriptors are fewer.
-  EXPECT_EQ(effective_max_connections(tuning, 256 * kMiB),
-            std::min<std::size_t>(10240, by_descriptors));
-  EXPECT_EQ(effective_max_connections(tuning, 128 * kMiB),
+  // 256 MiB less the baseline (32), a calculation peak per thread (64 each) and the least work
+  // budget (64), at 16 KiB each, unless the descriptors are fewer.
+  EXPECT_EQ(effective_max_connections(tuning, 256 * kMiB, 2),
             std::min<std::size_t>(2048, by_descriptors));
-  // A memory limit no larger than the reserve still lets one connection in.
-  EXPECT_EQ(effective_max_connections(tuning, 96 * kMiB), 1U);
-  EXPECT_EQ(effective_max_connections(tuning, 64 * kMiB), 1U);
-  EXPECT_EQ(effective_max_connections(tuning, 0), 1U);
+  EXPECT_EQ(effective_max_connections(tuning, 256 * kMiB, 1),
+            std::min<std::size_t>(6144, by_descriptors));
+  EXPECT_EQ(effective_max_connections(tuning, 1024 * kMiB, 2),
+            std::min<std::size_t>(51200, by_descriptors));
+  // A memory limit too small for its calculations still takes the least cap.
+  EXPECT_EQ(effective_max_connections(tuning, 128 * kMiB, 2),
+            std::min<std::size_t>(kMinimumMemoryConnections, by_descriptors));
+  EXPECT_EQ(effective_max_connections(tuning, 0, 2),
+            std::min<std::size_t>(kMinimumMemoryConnections, by_descriptors));
 
   // What a connection is budgeted counts.
   HttpTuning costly = tuning;
   costly.connection_memory_bytes = 32 * 1024;
-  EXPECT_EQ(effective_max_connections(costly, 128 * kMiB),
-            std::min<std::size_t>(1024, by_descriptors));
+  EXPECT_EQ(effective_max_connections(costly, 256 * kMiB, 1),
+            std::min<std::size_t>(3072, by_descriptors));
 
   // --max-connections wins over both limits.
   HttpTuning given = tuning;
   given.max_connections = 7;
-  EXPECT_EQ(effective_max_connections(given, 256 * kMiB), 7U);
-  EXPECT_EQ(effective_max_connections(given, 1 * kMiB), 7U);
-  EXPECT_EQ(effective_max_connections(given, std::nullopt), 7U);
+  EXPECT_EQ(effective_max_connections(given, 256 * kMiB, 2), 7U);
+  EXPECT_EQ(effective_max_connections(given, 1 * kMiB, 2), 7U);
+  EXPECT_EQ(effective_max_connections(given, std::nullopt, 2), 7U);
   given.max_connections = 500000;
-  EXPECT_EQ(effective_max_connections(given, 128 * kMiB), 500000U);
+  EXPECT_EQ(effective_max_connections(given, 128 * kMiB, 2), 500000U);
 }
 
 }  // namespace

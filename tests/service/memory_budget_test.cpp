@@ -7,6 +7,7 @@
 
 #include <utility>
 
+#include "api/routes.h"
 #include "service/http_tuning.h"
 
 namespace cutcalc::service {
@@ -62,17 +63,22 @@ TEST(MemoryBudget, LeaseGivesItsBytesBackUnlessTakenOver) {
 TEST(MemoryBudget, ServiceBudgetIsTheLimitLessConnectionsCalculationsAndBaseline) {
   const HttpTuning tuning;
   const std::uint64_t limit = 1024 * kMebibyte;
-  const std::size_t connections = effective_max_connections(tuning, limit);
+  const std::size_t connections = effective_max_connections(tuning, limit, 2);
   EXPECT_EQ(effective_memory_budget(tuning, connections, 2, limit),
             limit - connections * tuning.connection_memory_bytes - kProcessBaselineBytes -
                 2 * kCalculationPeakBytes);
   // Without a limit the connections are not bounded by memory and not counted.
   EXPECT_EQ(effective_memory_budget(tuning, 65536, 1, std::nullopt),
             kDefaultMemoryLimitBytes - kProcessBaselineBytes - kCalculationPeakBytes);
-  // A 256 MiB pod with the default cap keeps the minimum.
-  EXPECT_EQ(effective_memory_budget(tuning, effective_max_connections(tuning, 256 * kMebibyte), 2,
-                                    256 * kMebibyte),
-            kMinimumMemoryBudgetBytes);
+  // A 256 MiB pod: the connection cap leaves the work budget room for the largest body a route
+  // takes, counted as the engine counts a large body (a program to time: 32 MiB, twice).
+  for (const std::size_t threads : {1, 2}) {
+    const std::uint64_t budget =
+        effective_memory_budget(tuning, effective_max_connections(tuning, 256 * kMebibyte, threads),
+                                threads, 256 * kMebibyte);
+    EXPECT_GE(budget, kLargeBodyHeldTimes * api::kProgramBodyBytes) << threads << " threads";
+    EXPECT_EQ(budget, kMinimumMemoryBudgetBytes) << threads << " threads";
+  }
 }
 
 }  // namespace
