@@ -637,8 +637,9 @@ class EventLoopEngine::Loop {
       if (auto* deferred = std::get_if<DeferredResponse>(&reply)) {
         // The job owns a copy: a large body's buffers go now, not when the answer is sent.
         if (connection.unread().empty()) release_large_buffers(connection);
-        // Answers waiting for their clients have spent the budget: no more work until they drain.
-        const bool over_budget = engine_.budget_.spent();
+        // Answers waiting for their clients and other requests' bodies have spent the budget: no
+        // more work until they drain. This request's own body is what the work is for.
+        const bool over_budget = engine_.budget_.spent_besides(connection.body_charge);
         if (over_budget) engine_.counters_.memory_refused.fetch_add(1, std::memory_order_relaxed);
         if (!over_budget && defer(connection, *deferred, head_only, after, request.http11)) {
           return false;
@@ -726,31 +727,36 @@ class EventLoopEngine::Loop {
              bool http11) {
     const int fd = connection.fd.get();
     const std::uint64_t id = connection.id;
+    // The answer takes the place of the body's charge, which goes once it is answered.
+    const std::uint64_t body_bytes = connection.body_charge;
     auto stop = std::make_shared<std::atomic<bool>>(false);
-    const bool queued = engine_.pool_->try_submit([this, fd, id, stop, run = std::move(work.run)] {
-      Completion done{fd, id, {}, false, {}, false, {}};
-      try {
-        done.response = run(*stop);
-        // Computed, the answer is held: it is kept only if the budget can count it.
-        const std::uint64_t bytes =
-            done.response.body.size() +
-            (done.response.body_source ? done.response.body_source->held_bytes() : 0);
-        if (engine_.budget_.try_take(bytes)) {
-          done.answer_bytes = BudgetLease(engine_.budget_, bytes);
-        } else {
-          done.over_budget = true;
-          done.response = {};
-        }
-      } catch (const std::exception& error) {
-        done.failed = true;
-        done.failure = error.what();
-      } catch (...) {  // domain::Interrupted once stopped; anything else is a bug
-        done.failed = true;
-        done.failure = "an exception that is not a std::exception";
-      }
-      if (stop->load()) return;
-      complete(std::move(done));
-    });
+    const bool queued =
+        engine_.pool_->try_submit([this, fd, id, stop, body_bytes, run = std::move(work.run)] {
+          Completion done{fd, id, {}, false, {}, false, {}};
+          try {
+            done.response = run(*stop);
+            // Computed, the answer is held: it is kept only if the budget can count what it holds
+            // beyond its body's charge.
+            const std::uint64_t bytes =
+                done.response.body.size() +
+                (done.response.body_source ? done.response.body_source->held_bytes() : 0);
+            const std::uint64_t extra = bytes - std::min(bytes, body_bytes);
+            if (engine_.budget_.try_take(extra)) {
+              done.answer_bytes = BudgetLease(engine_.budget_, extra);
+            } else {
+              done.over_budget = true;
+              done.response = {};
+            }
+          } catch (const std::exception& error) {
+            done.failed = true;
+            done.failure = error.what();
+          } catch (...) {  // domain::Interrupted once stopped; anything else is a bug
+            done.failed = true;
+            done.failure = "an exception that is not a std::exception";
+          }
+          if (stop->load()) return;
+          complete(std::move(done));
+        });
     if (!queued) return false;
     connection.awaiting = true;
     connection.awaited_head_only = head_only;

@@ -6,6 +6,7 @@
 // calculation before it is handed to the pool. What is held already (a computed answer) is
 // counted even past the capacity, and new work waits until it drains.
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <utility>
@@ -32,6 +33,12 @@ class MemoryBudget {
 
   // No new work fits: what is held has reached the capacity.
   [[nodiscard]] bool spent() const { return used_.load(std::memory_order_relaxed) >= capacity_; }
+  // As spent(), not counting `own` bytes held for the work itself (its body): a body that fills
+  // the budget alone does not keep its own calculation from running.
+  [[nodiscard]] bool spent_besides(std::uint64_t own) const {
+    const std::uint64_t used = used_.load(std::memory_order_relaxed);
+    return used - std::min(used, own) >= capacity_;
+  }
   [[nodiscard]] std::uint64_t used() const { return used_.load(std::memory_order_relaxed); }
   [[nodiscard]] std::uint64_t capacity() const { return capacity_; }
 

@@ -387,6 +387,23 @@ TEST(CalculationPool, LargeBodyIsCountedInTheBudgetUntilItsCalculationAnswers) {
   ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().used() == 0; }));
 }
 
+// The largest body a route takes may fill the budget alone: its own charge neither refuses its
+// calculation nor the answer that replaces it.
+TEST(CalculationPool, BodyThatFillsTheBudgetAloneIsCalculatedAndAnswered) {
+  HeldEngine held(1, std::chrono::seconds(60), kSmallBudgetBytes);
+  held.gate().open();
+  Client client(held.engine());
+  const std::string body(kSmallBudgetBytes / kLargeBodyHeldTimes, 'b');
+  client.send("POST /heavy HTTP/1.1\r\nHost: test\r\nX-Tag: whole\r\nContent-Length: " +
+              std::to_string(body.size()) + "\r\n\r\n" + body);
+  const testing::ParsedResponses answered = client.read_responses(1);
+  ASSERT_EQ(answered.finals(), 1U) << client.bytes();
+  EXPECT_EQ(answered.responses[0].status, 200) << answered.responses[0].body;
+  EXPECT_EQ(answered.responses[0].body, "heavy whole");
+  EXPECT_EQ(held.counters().memory_refused.load(), 0U);
+  ASSERT_TRUE(eventually([&] { return held.engine().memory_budget().used() == 0; }));
+}
+
 TEST(CalculationPool, HeadOfADeferredRequestHasContentLengthButNoBody) {
   HeldEngine held(1);
   held.gate().open();
