@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "api/header_text.h"
+#include "domain/common/ascii_text.h"
 
 namespace cutcalc::api {
 namespace {
@@ -14,7 +14,7 @@ namespace {
 double quality(std::string_view parameters) {
   while (!parameters.empty()) {
     const auto semicolon = parameters.find(';');
-    const std::string_view parameter = trim_space(parameters.substr(0, semicolon));
+    const std::string_view parameter = domain::trim_space(parameters.substr(0, semicolon));
     parameters =
         semicolon == std::string_view::npos ? std::string_view{} : parameters.substr(semicolon + 1);
     if (parameter.size() > 2 && (parameter[0] == 'q' || parameter[0] == 'Q') &&
@@ -39,7 +39,7 @@ std::optional<double> named_quality(std::string_view accept, std::string_view me
     const std::string_view range = accept.substr(0, comma);
     accept = comma == std::string_view::npos ? std::string_view{} : accept.substr(comma + 1);
     const auto semicolon = range.find(';');
-    if (iequals_ascii(trim_space(range.substr(0, semicolon)), media_type)) {
+    if (domain::iequals_ascii(domain::trim_space(range.substr(0, semicolon)), media_type)) {
       const double q =
           semicolon == std::string_view::npos ? 1.0 : quality(range.substr(semicolon + 1));
       best = std::max(best.value_or(0.0), q);
@@ -62,10 +62,10 @@ LanguageRank language_rank(std::string_view header, std::string_view language) {
     const std::string_view range = header.substr(0, comma);
     header = comma == std::string_view::npos ? std::string_view{} : header.substr(comma + 1);
     const auto semicolon = range.find(';');
-    const std::string_view tag = trim_space(range.substr(0, semicolon));
-    const bool names = iequals_ascii(tag, language) ||
+    const std::string_view tag = domain::trim_space(range.substr(0, semicolon));
+    const bool names = domain::iequals_ascii(tag, language) ||
                        (tag.size() > language.size() && tag[language.size()] == '-' &&
-                        iequals_ascii(tag.substr(0, language.size()), language));
+                        domain::iequals_ascii(tag.substr(0, language.size()), language));
     if (names) {
       const double q =
           semicolon == std::string_view::npos ? 1.0 : quality(range.substr(semicolon + 1));

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "api/header_text.h"
 #include "api/json_number_overflow.h"
+#include "domain/common/ascii_text.h"
 
 namespace cutcalc::api {
 namespace {
@@ -20,8 +20,8 @@ struct Rejected {
 }  // namespace
 
 bool is_json_media_type(std::string_view content_type) {
-  return iequals_ascii(trim_space(content_type.substr(0, content_type.find(';'))),
-                       "application/json");
+  return domain::iequals_ascii(domain::trim_space(content_type.substr(0, content_type.find(';'))),
+                               "application/json");
 }
 
 namespace {

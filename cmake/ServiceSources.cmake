@@ -4,8 +4,8 @@
 # sets <out var> to the hand-written sources and the three generated at build time (openapi.yaml
 # and the web page embedded, build facts for GET /version).
 function(cutcalc_service_sources root binary_dir out_var)
-  set(sources config.cpp cors.cpp cpu_budget.cpp http_app.cpp http_connection.cpp http_event_loop.cpp
-              http_framing.cpp http_request.cpp http_response.cpp http_tuning.cpp httplib_adapter.cpp
+  set(sources config.cpp cors.cpp cpu_budget.cpp http_app.cpp socket_addresses.cpp http_event_loop.cpp
+              http_framing.cpp http_request.cpp http_response.cpp http_tuning.cpp
               listener.cpp logging.cpp metrics.cpp request_id.cpp signals.cpp web_assets.cpp
               work_pool.cpp)
   list(TRANSFORM sources PREPEND ${root}/service/)

@@ -11,10 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "api/accept_header.h"
-#include "api/header_text.h"
 #include "api/json_endpoint.h"
 #include "api/problem.h"
 #include "api/routes.h"
+#include "domain/common/ascii_text.h"
 #include "domain/common/interruption.h"
 #include "service/build_info.h"
 #include "service/http_tuning.h"
@@ -77,15 +77,15 @@ ReadHeaders read_headers(const HttpRequest& req) {
     }
   };
   for (const HeaderField& field : req.fields) {
-    if (api::iequals_ascii(field.name, "Content-Type")) {
+    if (domain::iequals_ascii(field.name, "Content-Type")) {
       take(content_type, read.content_type, field.value);
-    } else if (api::iequals_ascii(field.name, "Accept")) {
+    } else if (domain::iequals_ascii(field.name, "Accept")) {
       take(accept, read.accept, field.value);
-    } else if (api::iequals_ascii(field.name, "Accept-Language")) {
+    } else if (domain::iequals_ascii(field.name, "Accept-Language")) {
       take(accept_language, read.accept_language, field.value);
-    } else if (api::iequals_ascii(field.name, kRequestIdHeader)) {
+    } else if (domain::iequals_ascii(field.name, kRequestIdHeader)) {
       take(request_id, read.request_id, field.value);
-    } else if (api::iequals_ascii(field.name, "Origin")) {
+    } else if (domain::iequals_ascii(field.name, "Origin")) {
       take(origin, read.origin, field.value);
     }
   }
@@ -117,6 +117,29 @@ std::string problem_instance(std::string_view target) {
 api::Problem problem(api::ProblemKind kind, api::ErrorCode code,
                      nlohmann::json params = nlohmann::json::object()) {
   return {kind, api::Message{code, std::move(params)}, {}};
+}
+
+// The catalogue's code for what the engine refused: the one of the same name.
+api::ErrorCode engine_error_code(HttpFault fault) {
+  switch (fault) {
+#define CUTCALC_HTTP_FAULT(name, status) \
+  case HttpFault::name:                  \
+    return api::ErrorCode::name;
+#include "service/http_faults.def"
+#undef CUTCALC_HTTP_FAULT
+  }
+  return api::ErrorCode::internal_error;  // unreachable: the switch names every fault
+}
+
+api::ProblemKind engine_problem_kind(HttpFault fault) {
+  switch (http_status(fault)) {
+    case 413:
+      return api::ProblemKind::payload_too_large;
+    case 503:
+      return api::ProblemKind::unavailable;
+    default:
+      return api::ProblemKind::bad_request;
+  }
 }
 
 void reply_json(HttpResponse& res, const nlohmann::json& body) {
@@ -187,26 +210,21 @@ void HttpApp::shutdown() {
 void HttpApp::serve_connection(int sock) { engine_->adopt(sock); }
 
 std::string HttpApp::engine_error_response(const EngineError& error) {
-  // The head could not be trusted, so its Accept-Language is not read: these answer in English.
-  const api::Problem said =
-      error.status == 413
-          ? problem(api::ProblemKind::payload_too_large, api::ErrorCode::body_too_large)
-      : error.busy == EngineBusy::uploads
-          ? problem(api::ProblemKind::unavailable, api::ErrorCode::uploads_busy,
-                    {{"retry_after_s", error.retry_after_s}})
-      : error.busy == EngineBusy::memory
-          ? problem(api::ProblemKind::unavailable, api::ErrorCode::memory_busy,
-                    {{"retry_after_s", error.retry_after_s}})
-      : error.status == 503
-          ? problem(api::ProblemKind::unavailable, api::ErrorCode::connection_limit)
-          : problem(api::ProblemKind::bad_request, api::ErrorCode::malformed_http,
-                    {{"reason", std::string(error.detail)}});
+  // What the head said of its language, as far as it was read; English where it was not.
+  const bool negotiated = !error.accept_language.empty();
+  const api::Language language = api::preferred_language(error.accept_language);
+  nlohmann::json params = nlohmann::json::object();
+  if (error.retry_after_s > 0) params["retry_after_s"] = error.retry_after_s;
+  const api::Problem said{engine_problem_kind(error.fault),
+                          api::Message{engine_error_code(error.fault), std::move(params)},
+                          {}};
   const std::string request_id = generate_request_id();
   const std::string instance = problem_instance(error.target);
   HttpResponse res;
   res.headers = cors_.rejection_headers(error.origin);
-  write(res, api::problem_response(said, instance, request_id, api::Language::en,
-                                   api::LanguageChoice::fixed));
+  write(res, api::problem_response(
+                 said, instance, request_id, language,
+                 negotiated ? api::LanguageChoice::negotiated : api::LanguageChoice::fixed));
   res.set_header(kRequestIdHeader, request_id);
   res.set_header(kNoSniffHeader, "nosniff");
   if (error.retry_after_s > 0) res.set_header("Retry-After", std::to_string(error.retry_after_s));
@@ -347,7 +365,7 @@ void HttpApp::install_routes() {
   });
 
   routes_.add_get("/readyz", [this](const HttpRequest& req, HttpResponse& res) {
-    if (draining_.load()) {
+    if (req.phase != ServerPhase::serving) {
       write(res, api::problem_response(
                      problem(api::ProblemKind::unavailable, api::ErrorCode::shutting_down),
                      problem_instance(req.path), std::string(res.header(kRequestIdHeader)),

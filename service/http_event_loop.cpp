@@ -15,6 +15,7 @@
 #include <cerrno>
 #include <cstring>
 #include <mutex>
+#include <optional>
 #include <system_error>
 #include <thread>
 #include <unordered_map>
@@ -86,12 +87,68 @@ class LargeBodySlot {
   std::atomic<std::uint64_t>* count_ = nullptr;
 };
 
+// What a connection waits for between two events. Each state has one deadline, set as it is
+// entered, and one epoll interest (`interest`); the sweep's action at the deadline is the state's.
+enum class Wait {
+  idle,         // the next request: keep_alive_timeout from the last response
+  request,      // the rest of a request: request_timeout from its first byte (and a large body's
+                // transfer time); past it the connection closes
+  calculation,  // the pool's answer to its request: calculation_timeout; past it 503
+  piece,        // the pool's next piece of a body being sent: calculation_timeout
+  output,       // the socket to take the output: write_timeout, renewed while the client reads
+  linger        // the client's end after the last response: linger_time
+};
+
+constexpr std::uint32_t interest(Wait state) {
+  switch (state) {
+    case Wait::idle:
+    case Wait::request:
+    case Wait::linger:  // read and dropped
+      return EPOLLIN;
+    case Wait::calculation:  // only the client's going is news, its end of input included
+      return EPOLLRDHUP;
+    case Wait::piece:  // only a failed socket (EPOLLHUP, EPOLLERR: always reported)
+      return 0;
+    case Wait::output:
+      return EPOLLOUT;
+  }
+  return EPOLLIN;
+}
+
+// A request partly received.
+struct Receiving {
+  Clock::time_point deadline;  // when all of it must be in
+  bool continue_sent = false;  // 100 Continue was sent for it
+};
+
+// A request handed to the calculation pool, owned by its connection until it is answered.
+struct AwaitedCalculation {
+  // How it is settled, and the flag that stops its calculation (shared with the job).
+  std::function<HttpResponse(DeferredOutcome, HttpResponse, std::string_view)> settle;
+  std::shared_ptr<std::atomic<bool>> stop;
+  Clock::time_point deadline;  // answered 503 if the pool has not answered by then
+  bool head_only = false;
+  bool http11 = true;
+  ConnectionAfter after = ConnectionAfter::close;
+};
+
+// The body of the response being sent, written as it is sent.
+struct StreamedBody {
+  std::shared_ptr<domain::TextSource> source;
+  bool chunked = true;         // HTTP/1.1; HTTP/1.0 ends it by the close
+  std::size_t held_bytes = 0;  // what the source holds, as of its last piece
+};
+
 }  // namespace event_loop_detail
 
 namespace {
 
+using event_loop_detail::AwaitedCalculation;
 using event_loop_detail::LargeBodySlot;
 using event_loop_detail::OpenCount;
+using event_loop_detail::Receiving;
+using event_loop_detail::StreamedBody;
+using event_loop_detail::Wait;
 
 constexpr int kLargeBodyRetryAfterSeconds = 1;
 
@@ -144,35 +201,21 @@ struct EventLoopEngine::Connection {
   std::size_t buffer_limit = 0;
   std::size_t frame_again_at = 0;
 
-  bool peer_eof = false;           // the client will send nothing more
-  bool last_response = false;      // close once the output is sent
-  bool lingering = false;          // last response sent, SHUT_WR done; dropping input until EOF
-  bool in_request = false;         // part of a request is buffered (request deadline runs)
-  bool continue_sent = false;      // 100 Continue sent for the request being received
-  bool awaiting = false;           // a request of this connection is on the pool
-  bool awaited_head_only = false;  // of that request: a HEAD
-  bool awaited_http11 = true;      // of that request: HTTP/1.1 (else 1.0)
-  ConnectionAfter awaited_after = ConnectionAfter::close;  // of that request
-  // Of that request: how it is settled, the flag that stops its calculation (shared with the
-  // job) and when it is answered 503 if the pool has not answered it.
-  std::function<HttpResponse(DeferredOutcome, HttpResponse, std::string_view)> awaited_settle;
-  std::shared_ptr<std::atomic<bool>> awaited_stop;
-  Clock::time_point awaited_deadline{};
-  // The body of the response being sent, written as it is sent: its source, its framing, what
-  // the source holds (as of its last piece), whether a piece is being written on the pool, and
-  // the deadline of that piece.
-  std::shared_ptr<domain::TextSource> stream;
-  bool stream_chunked = true;
-  std::size_t stream_bytes = 0;
-  bool stream_producing = false;
-  Clock::time_point stream_deadline{};
+  // What it waits for now, until when (Loop::wait sets both, and the epoll interest).
+  Wait waiting = Wait::idle;
+  Clock::time_point deadline{};
+  std::uint32_t events = 0;  // the epoll interest registered
+  // What it holds besides its buffers: a request partly in, a request on the pool, a body being
+  // sent. Each is owned here and gone once done.
+  std::optional<Receiving> receiving;
+  std::optional<AwaitedCalculation> awaited;
+  std::optional<StreamedBody> streamed;
+  bool peer_eof = false;            // the client will send nothing more
+  bool close_after_output = false;  // the last response is in the output
   // Bytes the socket had not sent when the connection began waiting for its client to read (the
   // write timeout then runs from each wait in which the client read enough).
   std::size_t socket_queued = 0;
-  std::uint32_t events = 0;              // the epoll interest registered
-  Clock::time_point request_deadline{};  // of the request being received
-  Clock::time_point deadline{};          // of whatever the connection waits for now
-  Clock::time_point idle_since{};        // when its last response was sent
+  Clock::time_point idle_since{};  // when its last response was sent
 
   // Gives back the buffers of an idle connection (a few KiB of its own each; thousands of idle
   // keep-alive connections must cost little).
@@ -343,7 +386,7 @@ class EventLoopEngine::Loop {
     for (Completion& done : completed) {
       const auto it = table_.find(done.fd);
       // Closed meanwhile, or answered 503 at the calculation timeout.
-      if (it == table_.end() || it->second->id != done.connection_id || !it->second->awaiting) {
+      if (it == table_.end() || it->second->id != done.connection_id || !it->second->awaited) {
         continue;
       }
       Connection& connection = *it->second;
@@ -367,8 +410,8 @@ class EventLoopEngine::Loop {
       Connection& connection = *owned;
       table_.emplace(fd, std::move(owned));
       connection.idle_since = Clock::now();
-      connection.deadline = connection.idle_since + engine_.settings_.limits.keep_alive_timeout;
-      if (!watch(connection, EPOLLIN, EPOLL_CTL_ADD)) close(fd);
+      wait(connection, Wait::idle,
+           connection.idle_since + engine_.settings_.limits.keep_alive_timeout, EPOLL_CTL_ADD);
     }
     return true;
   }
@@ -395,11 +438,20 @@ class EventLoopEngine::Loop {
     return true;
   }
 
+  // Enters `state` until `deadline`, with the epoll interest it needs; closes the connection when
+  // epoll refuses (nothing of it may be touched after a wait then).
+  void wait(Connection& connection, Wait state, Clock::time_point deadline,
+            int operation = EPOLL_CTL_MOD) {
+    connection.waiting = state;
+    connection.deadline = deadline;
+    if (!watch(connection, interest(state), operation)) close(connection.fd.get());
+  }
+
   // The only way a connection ends: out of epoll, out of the table, destroyed (fd closed).
   void close(int fd) {
     const auto it = table_.find(fd);
     if (it == table_.end()) return;
-    if (it->second->awaiting) abandon(*it->second);
+    if (it->second->awaited) abandon(*it->second);
     // Out of epoll before the descriptor can be closed and its number reused. (It fails only if
     // the descriptor is not registered, which the table rules out; counted, never ignored.)
     if (it->second->events != 0 && ::epoll_ctl(epoll_fd_.get(), EPOLL_CTL_DEL, fd, nullptr) != 0) {
@@ -447,35 +499,38 @@ class EventLoopEngine::Loop {
 
   void on_event(Connection& connection, std::uint32_t events) {
     const int fd = connection.fd.get();
-    if (connection.lingering) {
-      const bool done = drop_input(connection);
-      if (done) close(fd);
-      return;
-    }
-    // Waiting for a calculation, only the client's going is news: a failed socket, or the end of
-    // its input (as nginx takes it: TCP cannot tell a half-close from a close before a write).
-    if (connection.awaiting && (events & (EPOLLHUP | EPOLLERR | EPOLLRDHUP)) != 0) {
-      return close(fd);
-    }
-    // A body that has begun is finished unless the socket fails: a client that half-closed after
-    // its request (`nc -N`) still reads, and one that has gone makes the next write fail.
-    if (connection.stream_producing) {
-      if ((events & (EPOLLHUP | EPOLLERR)) != 0) close(fd);
-      return;
-    }
-    if ((events & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0 && !connection.awaiting &&
-        !connection.stream && !connection.has_output() && !connection.last_response &&
-        !connection.peer_eof) {
-      switch (read_input(connection)) {
-        case Read::data:
-        case Read::again:
-          break;
-        case Read::eof:
-          connection.peer_eof = true;
-          break;
-        case Read::error:
-          return close(fd);
-      }
+    switch (connection.waiting) {
+      case Wait::linger:
+        if (drop_input(connection)) close(fd);
+        return;
+      case Wait::calculation:
+        // Only the client's going is news: a failed socket, or the end of its input (as nginx
+        // takes it: TCP cannot tell a half-close from a close before a write).
+        if ((events & (EPOLLHUP | EPOLLERR | EPOLLRDHUP)) != 0) close(fd);
+        return;
+      case Wait::piece:
+        // A body that has begun is finished unless the socket fails: a client that half-closed
+        // after its request (`nc -N`) still reads, and one that has gone makes the next write
+        // fail. Its input waits, its end included, until the body is out.
+        if ((events & (EPOLLHUP | EPOLLERR)) != 0) close(fd);
+        return;
+      case Wait::output:
+        break;  // the socket takes more (or has failed: the write says so)
+      case Wait::idle:
+      case Wait::request:
+        if ((events & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0 && !connection.peer_eof) {
+          switch (read_input(connection)) {
+            case Read::data:
+            case Read::again:
+              break;
+            case Read::eof:
+              connection.peer_eof = true;
+              break;
+            case Read::error:
+              return close(fd);
+          }
+        }
+        break;
     }
     advance(connection);
   }
@@ -487,30 +542,30 @@ class EventLoopEngine::Loop {
     step(connection);
     const auto it = table_.find(fd);
     if (it == table_.end() || it->second.get() != &connection) return;  // closed
-    if (!connection.awaiting && !connection.large_body.held()) connection.body_charge = 0;
+    if (!connection.awaited && !connection.large_body.held()) connection.body_charge = 0;
     connection.charge.set(connection.body_charge + connection.pending_output() +
-                          (connection.stream ? connection.stream_bytes : 0));
+                          (connection.streamed ? connection.streamed->held_bytes : 0));
   }
 
+  // Serves and sends what it can, then waits for what comes next.
   void step(Connection& connection) {
     const int fd = connection.fd.get();
+    const HttpLimits& limits = engine_.settings_.limits;
     for (;;) {
       const bool more = serve_buffered(connection);
       switch (flush(connection)) {
         case Flush::error:
           return close(fd);
         case Flush::again:
-          if (!watch(connection, EPOLLOUT)) return close(fd);
-          connection.deadline = Clock::now() + engine_.settings_.limits.write_timeout;
           connection.socket_queued = socket_queue(fd);
-          return;
+          return wait(connection, Wait::output, Clock::now() + limits.write_timeout);
         case Flush::done:
           break;
       }
-      if (connection.stream && !connection.stream_producing) {
+      if (connection.streamed) {
         switch (produce(connection)) {
           case Produced::queued:
-            break;
+            return wait(connection, Wait::piece, Clock::now() + limits.calculation_timeout);
           case Produced::here:
             continue;  // send it
           case Produced::closed:
@@ -519,32 +574,19 @@ class EventLoopEngine::Loop {
       }
       if (!more) break;  // else serving stopped at the high-water mark: serve on
     }
-    if (connection.stream_producing) {
-      // The next piece is being written: only a failed socket is news (EPOLLHUP and EPOLLERR
-      // are always reported). The client's input waits, its end included, until the body is out.
-      connection.deadline = connection.stream_deadline;
-      if (!watch(connection, 0)) close(fd);
-      return;
-    }
-    if (connection.awaiting) {
-      // No reading until the answer is in: pipelined requests wait their turn, and an EOF or a
-      // full buffer cannot wake the loop over and over. The calculation timeout bounds the wait.
-      connection.deadline = connection.awaited_deadline;
-      if (!watch(connection, EPOLLRDHUP)) close(fd);
-      return;
-    }
+    // No reading while a calculation runs: pipelined requests wait their turn, and an EOF or a
+    // full buffer cannot wake the loop over and over.
+    if (connection.awaited)
+      return wait(connection, Wait::calculation, connection.awaited->deadline);
     const auto now = Clock::now();
-    if (connection.last_response) return linger(connection, now);
+    if (connection.close_after_output) return linger(connection, now);
     if (connection.peer_eof) return close(fd);  // a partial request can never complete
-    if (connection.in_request) {
-      connection.deadline = connection.request_deadline;
-    } else {
-      connection.idle_since = now;
-      connection.deadline = now + engine_.settings_.limits.keep_alive_timeout;
-      if (connection.input.size() > kIdleBufferBytes) std::vector<char>().swap(connection.input);
-      if (connection.output.capacity() > kIdleBufferBytes) std::string().swap(connection.output);
-    }
-    if (!watch(connection, EPOLLIN)) close(fd);
+    if (connection.receiving)
+      return wait(connection, Wait::request, connection.receiving->deadline);
+    connection.idle_since = now;
+    if (connection.input.size() > kIdleBufferBytes) std::vector<char>().swap(connection.input);
+    if (connection.output.capacity() > kIdleBufferBytes) std::string().swap(connection.output);
+    wait(connection, Wait::idle, now + limits.keep_alive_timeout);
   }
 
   static void release_large_buffers(Connection& connection) {
@@ -566,7 +608,7 @@ class EventLoopEngine::Loop {
   // A connection past its write timeout whose client still reads, at least at
   // HttpLimits::min_download_bytes_per_s since the wait began: the wait starts again.
   static bool reading_slowly(Connection& connection, const HttpLimits& limits) {
-    if ((connection.events & EPOLLOUT) == 0) return false;
+    if (connection.waiting != Wait::output) return false;
     const std::size_t queued = socket_queue(connection.fd.get());
     const auto seconds =
         std::chrono::duration_cast<std::chrono::seconds>(limits.write_timeout).count();
@@ -580,7 +622,7 @@ class EventLoopEngine::Loop {
   // True when it stopped at the output high-water mark with input left to serve.
   bool serve_buffered(Connection& connection) {
     const EventLoopSettings& settings = engine_.settings_;
-    while (!connection.last_response && !connection.awaiting && !connection.stream &&
+    while (!connection.close_after_output && !connection.awaited && !connection.streamed &&
            !connection.unread().empty()) {
       if (connection.pending_output() >= settings.limits.max_pending_output_bytes) return true;
       const std::string_view unread = connection.unread();
@@ -590,39 +632,38 @@ class EventLoopEngine::Loop {
       if (frame.verdict == RequestFrame::Verdict::incomplete) {
         start_request(connection);
         // Before the buffer check: an admitted large body may buffer more than the default.
-        if (const EngineBusy busy = frame.head_bytes > 0
-                                        ? admit_large_body(connection, frame, unread)
-                                        : EngineBusy::none;
-            busy != EngineBusy::none) {
-          (busy == EngineBusy::memory ? engine_.counters_.memory_refused
-                                      : engine_.counters_.large_bodies_refused)
+        if (const auto busy =
+                frame.head_bytes > 0 ? admit_large_body(connection, frame, unread) : std::nullopt) {
+          (*busy == HttpFault::memory_busy ? engine_.counters_.memory_refused
+                                           : engine_.counters_.large_bodies_refused)
               .fetch_add(1, std::memory_order_relaxed);
-          reject(connection, {503, "the server cannot take this body now", frame.method,
-                              frame.target, frame.origin, kLargeBodyRetryAfterSeconds, busy});
+          reject(connection, refusal(*busy, frame, kLargeBodyRetryAfterSeconds));
           return false;
         }
         const std::size_t cap = connection.buffer_limit > 0 ? connection.buffer_limit
                                                             : settings.limits.max_buffered_bytes();
         if (unread.size() >= cap) {  // cannot happen: framing
-          reject(connection, {400, "the request is over the size limit", {}, {}, {}});
+          reject(connection, refusal(HttpFault::request_too_large, frame));
           return false;
         }
-        if (frame.expects_continue && frame.head_bytes > 0 && !connection.continue_sent) {
+        if (frame.expects_continue && frame.head_bytes > 0 &&
+            !connection.receiving->continue_sent) {
           connection.output.append(kContinue, sizeof(kContinue) - 1);
-          connection.continue_sent = true;
+          connection.receiving->continue_sent = true;
         }
         return false;
       }
       if (frame.verdict == RequestFrame::Verdict::reject) {
-        reject(connection, {frame.status, frame.reason, frame.method, frame.target, frame.origin});
+        reject(connection, refusal(frame.fault, frame));
         return false;
       }
       HttpRequest request = framed_request(unread, frame, connection.fields,
                                            connection.decoded_body, connection.path_scratch);
       request.addresses = &connection.addresses;
+      request.phase = engine_.phase_();
       const bool head_only = request.method == "HEAD";
       const bool keep_alive = request.wants_keep_alive() && connection.requests_left > 1 &&
-                              engine_.phase_() == ServerPhase::serving;
+                              request.phase == ServerPhase::serving;
       const ConnectionAfter after = !keep_alive      ? ConnectionAfter::close
                                     : request.http11 ? ConnectionAfter::keep_alive
                                                      : ConnectionAfter::keep_alive_http10;
@@ -630,8 +671,7 @@ class EventLoopEngine::Loop {
       // The request's views die here: the reply owns what it needs.
       connection.consume(frame.wire_bytes);
       end_large_body(connection);
-      connection.in_request = false;
-      connection.continue_sent = false;
+      connection.receiving.reset();
       if (connection.requests_left > 1) --connection.requests_left;
       engine_.counters_.requests.fetch_add(1, std::memory_order_relaxed);
       if (auto* deferred = std::get_if<DeferredResponse>(&reply)) {
@@ -664,11 +704,10 @@ class EventLoopEngine::Loop {
     if (streams && !http11) after = ConnectionAfter::close;  // HTTP/1.0: the close ends the body
     write_response(response, head_only, after, connection.output, http11);
     if (streams) {
-      connection.stream_bytes = response.body_source->held_bytes();
-      connection.stream = std::move(response.body_source);
-      connection.stream_chunked = http11;
+      const std::size_t held = response.body_source->held_bytes();
+      connection.streamed = StreamedBody{std::move(response.body_source), http11, held};
     }
-    if (after == ConnectionAfter::close) connection.last_response = true;
+    if (after == ConnectionAfter::close) connection.close_after_output = true;
   }
 
   enum class Produced { queued, here, closed };
@@ -688,13 +727,12 @@ class EventLoopEngine::Loop {
       }
       return piece;
     };
+    const std::shared_ptr<domain::TextSource>& source = connection.streamed->source;
     if (engine_.pool_->try_submit(
-            [this, write_piece, source = connection.stream] { complete(write_piece(*source)); })) {
-      connection.stream_producing = true;
-      connection.stream_deadline = Clock::now() + engine_.settings_.limits.calculation_timeout;
+            [this, write_piece, source] { complete(write_piece(*source)); })) {
       return Produced::queued;
     }
-    Piece piece = write_piece(*connection.stream);
+    Piece piece = write_piece(*source);
     return take_piece(connection, piece, false) ? Produced::here : Produced::closed;
   }
 
@@ -702,18 +740,17 @@ class EventLoopEngine::Loop {
   // cuts the body short: the connection closes (the client sees a chunked body without its end).
   // False when the connection closed. `advance`: send it now (a piece that came from the pool).
   bool take_piece(Connection& connection, Piece& piece, bool advance_now = true) {
-    connection.stream_producing = false;
     if (piece.failed) {
       engine_.counters_.streams_broken.fetch_add(1, std::memory_order_relaxed);
       close(connection.fd.get());
       return false;
     }
-    append_body_piece(piece.text, connection.stream_chunked, connection.output);
-    connection.stream_bytes = piece.source_bytes;
+    StreamedBody& body = *connection.streamed;
+    append_body_piece(piece.text, body.chunked, connection.output);
+    body.held_bytes = piece.source_bytes;
     if (!piece.more) {
-      end_body(connection.stream_chunked, connection.output);
-      connection.stream.reset();
-      connection.stream_bytes = 0;
+      end_body(body.chunked, connection.output);
+      connection.streamed.reset();
     }
     if (advance_now) advance(connection);
     return true;
@@ -758,36 +795,34 @@ class EventLoopEngine::Loop {
           complete(std::move(done));
         });
     if (!queued) return false;
-    connection.awaiting = true;
-    connection.awaited_head_only = head_only;
-    connection.awaited_http11 = http11;
-    connection.awaited_after = after;
-    connection.awaited_settle = std::move(work.settle);
-    connection.awaited_stop = std::move(stop);
-    connection.awaited_deadline = Clock::now() + engine_.settings_.limits.calculation_timeout;
+    connection.awaited =
+        AwaitedCalculation{std::move(work.settle),
+                           std::move(stop),
+                           Clock::now() + engine_.settings_.limits.calculation_timeout,
+                           head_only,
+                           http11,
+                           after};
     return true;
   }
 
   // Ends the connection's wait for the pool: the response that settles its request goes out.
   void answer_awaited(Connection& connection, DeferredOutcome outcome, HttpResponse computed,
                       std::string_view failure) {
-    const auto settle = std::move(connection.awaited_settle);
-    connection.awaited_settle = nullptr;
-    connection.awaited_stop.reset();
-    connection.awaiting = false;
+    AwaitedCalculation awaited = std::move(*connection.awaited);
+    connection.awaited.reset();
     // A timed-out calculation may still hold a pool thread until its next check: the client is
     // told to come back later, on a new connection.
     if (engine_.phase_() != ServerPhase::serving || outcome == DeferredOutcome::timed_out) {
-      connection.awaited_after = ConnectionAfter::close;
+      awaited.after = ConnectionAfter::close;
     }
-    respond(connection, settle(outcome, std::move(computed), failure), connection.awaited_head_only,
-            connection.awaited_after, connection.awaited_http11);
+    respond(connection, awaited.settle(outcome, std::move(computed), failure), awaited.head_only,
+            awaited.after, awaited.http11);
   }
 
   // The calculation timeout passed: its job is stopped and the client answered 503.
   void time_out_calculation(Connection& connection) {
     engine_.counters_.calculation_timeouts.fetch_add(1, std::memory_order_relaxed);
-    connection.awaited_stop->store(true);
+    connection.awaited->stop->store(true);
     answer_awaited(connection, DeferredOutcome::timed_out, {}, {});
     advance(connection);
   }
@@ -796,10 +831,11 @@ class EventLoopEngine::Loop {
   // stops): the job is stopped and the request settled without an answer.
   void abandon(Connection& connection) noexcept {
     engine_.counters_.calculations_abandoned.fetch_add(1, std::memory_order_relaxed);
-    connection.awaited_stop->store(true);
-    connection.awaiting = false;
+    const AwaitedCalculation awaited = std::move(*connection.awaited);
+    connection.awaited.reset();
+    awaited.stop->store(true);
     try {
-      connection.awaited_settle(DeferredOutcome::abandoned, {}, {});
+      awaited.settle(DeferredOutcome::abandoned, {}, {});
     } catch (...) {  // its metrics and log line are lost; nothing else can be
     }
   }
@@ -811,37 +847,43 @@ class EventLoopEngine::Loop {
     return unread.ends_with("\r\n\r\n");
   }
 
+  // The engine's answer to `frame`, refused for `fault`.
+  static EngineError refusal(HttpFault fault, const RequestFrame& frame, int retry_after_s = 0) {
+    return {fault, frame.method, frame.target, frame.origin, frame.accept_language, retry_after_s};
+  }
+
   // A request whose route takes large bodies, with a body above the default limit (or chunked):
   // takes one of the engine's places for such bodies and its length (a chunked body: the limit)
   // in the memory budget, raises what the connection may buffer and gives the transfer time at
-  // HttpLimits::min_upload_bytes_per_s. Says what refused it, if anything did.
-  EngineBusy admit_large_body(Connection& connection, const RequestFrame& frame,
-                              std::string_view unread) {
+  // HttpLimits::min_upload_bytes_per_s. Says what refused it, if anything did (uploads_busy or
+  // memory_busy).
+  std::optional<HttpFault> admit_large_body(Connection& connection, const RequestFrame& frame,
+                                            std::string_view unread) {
     const HttpLimits& limits = engine_.settings_.limits;
     const std::size_t body_limit = limits.body_limit_for(frame.target);
-    if (body_limit <= limits.max_body_bytes) return EngineBusy::none;
-    if (!frame.chunked && frame.body_bytes <= limits.max_body_bytes) return EngineBusy::none;
+    if (body_limit <= limits.max_body_bytes) return std::nullopt;
+    if (!frame.chunked && frame.body_bytes <= limits.max_body_bytes) return std::nullopt;
     if (!connection.large_body.held()) {
       const std::size_t expected = frame.chunked ? body_limit : frame.body_bytes;
       const std::size_t charged = expected * kLargeBodyHeldTimes;
-      if (!connection.charge.try_add(charged)) return EngineBusy::memory;
+      if (!connection.charge.try_add(charged)) return HttpFault::memory_busy;
       if (!connection.large_body.acquire(engine_.counters_.large_bodies_receiving,
                                          limits.max_large_bodies)) {
         connection.charge.set(connection.charge.bytes() - charged);
-        return EngineBusy::uploads;
+        return HttpFault::uploads_busy;
       }
       connection.body_charge = charged;
       connection.buffer_limit = limits.max_buffered_bytes(body_limit);
       const auto transfer = std::chrono::milliseconds(
           expected * 1000 / std::max<std::size_t>(limits.min_upload_bytes_per_s, 1));
-      if (connection.request_deadline != Clock::time_point::max()) {
-        connection.request_deadline += transfer;
+      if (connection.receiving->deadline != Clock::time_point::max()) {
+        connection.receiving->deadline += transfer;
       }
     }
     connection.frame_again_at = frame.chunked
                                     ? std::max(unread.size() * 2, limits.max_buffered_bytes())
                                     : frame.body_offset + frame.body_bytes;
-    return EngineBusy::none;
+    return std::nullopt;
   }
 
   static void end_large_body(Connection& connection) {
@@ -851,19 +893,18 @@ class EventLoopEngine::Loop {
   }
 
   void start_request(Connection& connection) {
-    if (connection.in_request) return;
-    connection.in_request = true;
+    if (connection.receiving) return;
     const auto timeout = engine_.settings_.limits.request_timeout;
-    connection.request_deadline =
-        timeout.count() > 0 ? Clock::now() + timeout : Clock::time_point::max();
+    connection.receiving =
+        Receiving{timeout.count() > 0 ? Clock::now() + timeout : Clock::time_point::max()};
   }
 
   // An error answered by the engine; nothing after it on this connection is read as a request.
   void reject(Connection& connection, const EngineError& error) {
     engine_.counters_.rejected_requests.fetch_add(1, std::memory_order_relaxed);
     connection.output += engine_.render_error_(error);
-    connection.last_response = true;
-    connection.in_request = false;
+    connection.close_after_output = true;
+    connection.receiving.reset();
     connection.drop_input();
     end_large_body(connection);
   }
@@ -892,10 +933,8 @@ class EventLoopEngine::Loop {
     const int fd = connection.fd.get();
     if (connection.peer_eof || engine_.phase_() == ServerPhase::stopped) return close(fd);
     ::shutdown(fd, SHUT_WR);
-    connection.lingering = true;
-    connection.in_request = false;
-    connection.deadline = now + engine_.settings_.limits.linger_time;
-    if (!watch(connection, EPOLLIN)) close(fd);
+    connection.receiving.reset();
+    wait(connection, Wait::linger, now + engine_.settings_.limits.linger_time);
   }
 
   // True when the connection is done (EOF or error).
@@ -918,26 +957,36 @@ class EventLoopEngine::Loop {
     std::uint64_t held = 0;
     std::uint64_t released = 0;
     for (const auto& [fd, connection] : table_) {
-      const bool idle = !connection->in_request && !connection->awaiting && !connection->stream &&
-                        !connection->has_output() && !connection->lingering &&
-                        connection->unread().empty();
+      const bool idle = connection->waiting == Wait::idle && connection->unread().empty();
       if (idle && now - connection->idle_since >= kSweepInterval) {
         released += connection->held_bytes();
         connection->release_buffers();
       }
       held += connection->held_bytes();
-      if (now >= connection->deadline && connection->awaiting) {
-        calculations_late.push_back(fd);
-      } else if (now >= connection->deadline &&
-                 reading_slowly(*connection, engine_.settings_.limits)) {
-        connection->deadline = now + engine_.settings_.limits.write_timeout;
-      } else if (now >= connection->deadline) {
-        if (connection->in_request) {
-          engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
+      if (now >= connection->deadline) {
+        switch (connection->waiting) {
+          case Wait::calculation:
+            calculations_late.push_back(fd);
+            break;
+          case Wait::output:
+            if (reading_slowly(*connection, engine_.settings_.limits)) {
+              connection->deadline = now + engine_.settings_.limits.write_timeout;
+            } else {
+              expired.push_back(fd);
+            }
+            break;
+          case Wait::request:
+            engine_.counters_.request_timeouts.fetch_add(1, std::memory_order_relaxed);
+            expired.push_back(fd);
+            break;
+          case Wait::idle:
+          case Wait::piece:
+          case Wait::linger:
+            expired.push_back(fd);
+            break;
         }
-        expired.push_back(fd);
-      } else if (stopped &&
-                 (connection->lingering || (idle && now - connection->idle_since >= grace))) {
+      } else if (stopped && (connection->waiting == Wait::linger ||
+                             (idle && now - connection->idle_since >= grace))) {
         idle_at_stop.push_back(fd);
       }
     }
@@ -963,7 +1012,8 @@ class EventLoopEngine::Loop {
       const auto it = table_.find(fd);
       if (it == table_.end()) continue;
       char byte = 0;
-      if (!it->second->lingering && ::recv(fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 1) {
+      if (it->second->waiting != Wait::linger &&
+          ::recv(fd, &byte, 1, MSG_PEEK | MSG_DONTWAIT) == 1) {
         on_event(*it->second, EPOLLIN);
       } else {
         close(fd);
@@ -1025,8 +1075,9 @@ void EventLoopEngine::adopt(int sock) {
     std::array<char, 4096> sink{};
     while (::recv(fd.get(), sink.data(), sink.size(), MSG_DONTWAIT) > 0) {
     }
-    const std::string response =
-        render_error_({503, "the server is at its connection limit; retry later", {}, {}, {}});
+    EngineError at_cap;  // nothing of the request was read
+    at_cap.fault = HttpFault::connection_limit;
+    const std::string response = render_error_(at_cap);
     [[maybe_unused]] const auto n =
         ::send(fd.get(), response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
     ::shutdown(fd.get(), SHUT_WR);

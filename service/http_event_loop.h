@@ -35,12 +35,14 @@
 #include <variant>
 #include <vector>
 
-#include "service/http_connection.h"
+#include "service/engine_counters.h"
+#include "service/http_fault.h"
 #include "service/http_framing.h"
 #include "service/http_limits.h"
 #include "service/http_request.h"
 #include "service/http_response.h"
 #include "service/memory_budget.h"
+#include "service/socket_addresses.h"
 #include "service/work_pool.h"
 
 namespace cutcalc::service {
@@ -62,30 +64,17 @@ struct EventLoopSettings {
 // from its head on.
 inline constexpr std::size_t kLargeBodyHeldTimes = 2;
 
-// What a passing refusal by the engine (503 with Retry-After) is about.
-enum class EngineBusy {
-  none,
-  uploads,  // HttpLimits::max_large_bodies are being received
-  memory    // the memory budget cannot take the body (service/memory_budget.h)
-};
-
-// A response the engine gives by itself, before any handler: a framing error (400), a body over
-// the limit (413), the connection cap or a passing refusal (503). The connection closes after it.
+// A response the engine gives by itself, before any handler (service/http_fault.h): a framing
+// error (400), a body over the limit (413), the connection cap or a passing refusal (503). The
+// connection closes after it. The views are of the request as far as it was read (empty where it
+// was not), so that the answer can carry CORS headers and speak the client's language.
 struct EngineError {
-  int status = 400;
-  std::string_view detail;
+  HttpFault fault = HttpFault::malformed_request_line;
   std::string_view method;  // empty when the request line was not read
   std::string_view target;
-  std::string_view origin;  // the request's Origin field; empty when it was not read
-  int retry_after_s = 0;    // a 503 for a passing condition (Retry-After); 0: none
-  EngineBusy busy = EngineBusy::none;
-};
-
-// Where the server is in its life (README.md, "Restarts"):
-enum class ServerPhase {
-  serving,   // keep-alive as usual
-  draining,  // SIGTERM, lame duck: the listener accepts still; every response says close
-  stopped    // the listener is closed: idle connections close after the drain grace
+  std::string_view origin;           // the request's Origin field
+  std::string_view accept_language;  // the request's Accept-Language field
+  int retry_after_s = 0;             // a 503 for a passing condition (Retry-After); 0: none
 };
 
 // How a request handed to the calculation pool ended.
@@ -124,7 +113,8 @@ class EventLoopEngine {
   // The whole response (status line to body) for an engine error; it must say Connection: close.
   // Called on a loop thread or the accept thread.
   using RenderError = std::function<std::string(const EngineError& error)>;
-  // Where the server is in its life; called on the loop threads.
+  // Where the server is in its life; called on the loop threads, once per request framed
+  // (HttpRequest::phase) and by the loops' own timers.
   using PhaseOf = std::function<ServerPhase()>;
 
   EventLoopEngine(EventLoopSettings settings, Serve serve, RenderError render_error, PhaseOf phase,

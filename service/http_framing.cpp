@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "api/header_text.h"
+#include "domain/common/ascii_text.h"
 
 namespace cutcalc::service {
 namespace {
@@ -87,10 +87,9 @@ Line next_line(std::string_view input, std::size_t pos, std::string_view& line) 
   return Line::ok;
 }
 
-RequestFrame reject(RequestFrame frame, int status, std::string_view reason) {
+RequestFrame reject(RequestFrame frame, HttpFault fault) {
   frame.verdict = Verdict::reject;
-  frame.status = status;
-  frame.reason = reason;
+  frame.fault = fault;
   return frame;
 }
 
@@ -129,16 +128,15 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
   std::size_t framing = 0;  // chunk sizes, extensions, CRLFs and trailers
   std::size_t content = 0;
   std::size_t fields = 0;
-  constexpr std::string_view kTooMuchFraming = "chunk framing is over the head size limit";
   // The next framing line at `pos`, counted against the head's allowance: ok, or a verdict.
   const auto framing_line = [&](std::string_view& line,
-                                std::string_view malformed) -> std::optional<RequestFrame> {
+                                HttpFault malformed) -> std::optional<RequestFrame> {
     switch (next_line(input, pos, line)) {
       case Line::bad:
-        return reject(frame, 400, malformed);
+        return reject(frame, malformed);
       case Line::incomplete:
         if (framing + (input.size() - pos) > limits.max_head_bytes) {
-          return reject(frame, 400, kTooMuchFraming);
+          return reject(frame, HttpFault::chunk_framing_too_large);
         }
         return frame;
       case Line::ok:
@@ -146,12 +144,12 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
     }
     framing += line.size() + 2;
     pos += line.size() + 2;
-    if (framing > limits.max_head_bytes) return reject(frame, 400, kTooMuchFraming);
+    if (framing > limits.max_head_bytes) return reject(frame, HttpFault::chunk_framing_too_large);
     return std::nullopt;
   };
   for (;;) {
     std::string_view line;
-    if (auto verdict = framing_line(line, "malformed chunk size line")) return *verdict;
+    if (auto verdict = framing_line(line, HttpFault::malformed_chunk_size)) return *verdict;
     // chunk-size [ chunk-ext ]: 1*HEXDIG, then nothing or BWS ";" and the extension (ignored).
     std::size_t digits = 0;
     std::uint64_t size = 0;
@@ -161,15 +159,15 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
     }
     const std::string_view rest = trim(line.substr(digits));
     if (digits == 0 || (!rest.empty() && (rest.front() != ';' || !is_field_value(rest)))) {
-      return reject(frame, 400, "malformed chunk size line");
+      return reject(frame, HttpFault::malformed_chunk_size);
     }
     if (size > body_limit - content) {
-      return reject(frame, 413, "the request body is over the size limit");
+      return reject(frame, HttpFault::body_too_large);
     }
     if (size == 0) break;
     if (input.size() - pos < size + 2) return frame;
     if (input.substr(pos + size, 2) != "\r\n") {
-      return reject(frame, 400, "chunk data is not followed by CRLF");
+      return reject(frame, HttpFault::chunk_without_crlf);
     }
     if (decoded != nullptr) decoded->append(input.substr(pos, size));
     content += size;
@@ -179,12 +177,12 @@ RequestFrame frame_chunked(std::string_view input, std::size_t pos, RequestFrame
   // Trailer section: field lines (validated, then dropped), then an empty line.
   for (;;) {
     std::string_view line;
-    if (auto verdict = framing_line(line, "malformed trailer field")) return *verdict;
+    if (auto verdict = framing_line(line, HttpFault::malformed_trailer_field)) return *verdict;
     if (line.empty()) break;
     std::string_view name;
     std::string_view value;
     if (!split_field(line, name, value) || ++fields > limits.max_fields) {
-      return reject(frame, 400, "malformed trailer field");
+      return reject(frame, HttpFault::malformed_trailer_field);
     }
   }
   frame.verdict = Verdict::complete;
@@ -204,55 +202,55 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits,
   // Empty lines before the request line are ignored (RFC 9112 2.2).
   while (input.substr(pos, 2) == "\r\n") pos += 2;
   if (pos > limits.max_head_bytes) {
-    return reject(frame, 400, "too many empty lines before the request line");
+    return reject(frame, HttpFault::too_many_empty_lines);
   }
   frame.skipped_bytes = pos;
   const std::size_t start = pos;
-  constexpr std::string_view kHeadTooLarge = "the request head is over the size limit";
   // The next line of the head at `pos`: ok, or the verdict (incomplete, or a rejection).
   const auto head_line = [&](std::string_view& line,
-                             std::string_view malformed) -> std::optional<RequestFrame> {
+                             HttpFault malformed) -> std::optional<RequestFrame> {
     switch (next_line(input, pos, line)) {
       case Line::bad:
-        return reject(frame, 400, malformed);
+        return reject(frame, malformed);
       case Line::incomplete:
-        if (input.size() - start > limits.max_head_bytes) return reject(frame, 400, kHeadTooLarge);
+        if (input.size() - start > limits.max_head_bytes)
+          return reject(frame, HttpFault::head_too_large);
         return frame;
       case Line::ok:
         break;
     }
     pos += line.size() + 2;
-    if (pos - start > limits.max_head_bytes) return reject(frame, 400, kHeadTooLarge);
+    if (pos - start > limits.max_head_bytes) return reject(frame, HttpFault::head_too_large);
     return std::nullopt;
   };
 
   // request-line = method SP request-target SP HTTP-version (RFC 9112 3)
   std::string_view request_line;
-  if (auto verdict = head_line(request_line, "malformed request line")) return *verdict;
+  if (auto verdict = head_line(request_line, HttpFault::malformed_request_line)) return *verdict;
   const std::size_t space1 = request_line.find(' ');
   const std::size_t space2 = space1 == npos ? npos : request_line.find(' ', space1 + 1);
   if (space2 == npos || space2 == space1 + 1 || request_line.find(' ', space2 + 1) != npos) {
-    return reject(frame, 400, "malformed request line");
+    return reject(frame, HttpFault::malformed_request_line);
   }
   const std::string_view method = request_line.substr(0, space1);
   const std::string_view target = request_line.substr(space1 + 1, space2 - space1 - 1);
   const std::string_view version = request_line.substr(space2 + 1);
   // origin-form, absolute-form or asterisk-form (RFC 9112 3.2), visible ASCII, no fragment.
   const bool target_ok = (target.front() == '/' || target == "*" ||
-                          api::iequals_ascii(target.substr(0, 7), "http://") ||
-                          api::iequals_ascii(target.substr(0, 8), "https://")) &&
+                          domain::iequals_ascii(target.substr(0, 7), "http://") ||
+                          domain::iequals_ascii(target.substr(0, 8), "https://")) &&
                          std::all_of(target.begin(), target.end(),
                                      [](char c) { return c > 0x20 && c < 0x7f && c != '#'; });
-  if (!is_token(method) || !target_ok) return reject(frame, 400, "malformed request line");
+  if (!is_token(method) || !target_ok) return reject(frame, HttpFault::malformed_request_line);
   if (request_line.size() > limits.max_request_line_bytes) {
-    return reject(frame, 400, "the request line is over the size limit");
+    return reject(frame, HttpFault::request_line_too_large);
   }
   frame.method = method;
   frame.target = target;
-  if (!is_known_method(method)) return reject(frame, 400, "unknown method");
+  if (!is_known_method(method)) return reject(frame, HttpFault::unknown_method);
   const bool http11 = version == "HTTP/1.1";
   if (!http11 && version != "HTTP/1.0") {
-    return reject(frame, 400, "the HTTP version is not HTTP/1.1 or HTTP/1.0");
+    return reject(frame, HttpFault::unsupported_http_version);
   }
   frame.http11 = http11;
 
@@ -266,21 +264,21 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits,
   bool only_chunked = true;
   for (;;) {
     std::string_view line;
-    if (auto verdict = head_line(line, "malformed header field line")) return *verdict;
+    if (auto verdict = head_line(line, HttpFault::malformed_field_line)) return *verdict;
     if (line.empty()) break;
     std::string_view name;
     std::string_view value;
-    if (!split_field(line, name, value)) return reject(frame, 400, "malformed header field line");
+    if (!split_field(line, name, value)) return reject(frame, HttpFault::malformed_field_line);
     if (line.size() > limits.max_field_line_bytes) {
-      return reject(frame, 400, "a header field line is over the size limit");
+      return reject(frame, HttpFault::field_line_too_large);
     }
-    if (++fields > limits.max_fields) return reject(frame, 400, "too many header fields");
+    if (++fields > limits.max_fields) return reject(frame, HttpFault::too_many_fields);
     if (fields_out != nullptr) fields_out->push_back({name, value});
-    if (api::iequals_ascii(name, "content-length")) {
+    if (domain::iequals_ascii(name, "content-length")) {
       if (!parse_content_length(value, has_length, length)) {
-        return reject(frame, 400, "Content-Length must be one number (digits only)");
+        return reject(frame, HttpFault::malformed_content_length);
       }
-    } else if (api::iequals_ascii(name, "transfer-encoding")) {
+    } else if (domain::iequals_ascii(name, "transfer-encoding")) {
       has_transfer_encoding = true;
       std::string_view rest = value;
       do {
@@ -289,35 +287,37 @@ RequestFrame classify_request(std::string_view input, const HttpLimits& limits,
         rest = comma == npos ? std::string_view{} : rest.substr(comma + 1);
         if (coding.empty()) continue;
         ++codings;
-        only_chunked = only_chunked && api::iequals_ascii(coding, "chunked");
+        only_chunked = only_chunked && domain::iequals_ascii(coding, "chunked");
       } while (!rest.empty());
-    } else if (api::iequals_ascii(name, "host")) {
+    } else if (domain::iequals_ascii(name, "host")) {
       ++hosts;
-    } else if (api::iequals_ascii(name, "origin")) {
+    } else if (domain::iequals_ascii(name, "origin")) {
       frame.origin = value;
-    } else if (api::iequals_ascii(name, "expect")) {
+    } else if (domain::iequals_ascii(name, "accept-language")) {
+      frame.accept_language = value;
+    } else if (domain::iequals_ascii(name, "expect")) {
       frame.expects_continue =
-          frame.expects_continue || (http11 && api::iequals_ascii(value, "100-continue"));
+          frame.expects_continue || (http11 && domain::iequals_ascii(value, "100-continue"));
     }
   }
   frame.head_bytes = pos - start;
   frame.body_offset = pos;
 
   if (http11 ? hosts != 1 : hosts > 1) {
-    return reject(frame, 400, "an HTTP/1.1 request needs exactly one Host header");
+    return reject(frame, HttpFault::host_not_once);
   }
   if (has_transfer_encoding) {
-    if (has_length) return reject(frame, 400, "Transfer-Encoding and Content-Length together");
-    if (!http11) return reject(frame, 400, "Transfer-Encoding in an HTTP/1.0 request");
+    if (has_length) return reject(frame, HttpFault::transfer_encoding_and_length);
+    if (!http11) return reject(frame, HttpFault::transfer_encoding_in_http_one_zero);
     if (codings != 1 || !only_chunked) {
-      return reject(frame, 400, "the only transfer coding accepted is chunked");
+      return reject(frame, HttpFault::unsupported_transfer_coding);
     }
     frame.chunked = true;
     return frame_chunked(input, pos, frame, limits, limits.body_limit_for(frame.target),
                          decoded_body);
   }
   if (length > limits.body_limit_for(frame.target)) {
-    return reject(frame, 413, "the request body is over the size limit");
+    return reject(frame, HttpFault::body_too_large);
   }
   frame.body_bytes = static_cast<std::size_t>(length);
   if (input.size() - pos < frame.body_bytes) return frame;

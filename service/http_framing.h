@@ -24,6 +24,7 @@
 
 #include "service/http_request.h"
 
+#include "service/http_fault.h"
 #include "service/http_limits.h"
 
 namespace cutcalc::service {
@@ -41,13 +42,13 @@ struct RequestFrame {
   bool expects_continue = false;  // Expect: 100-continue (HTTP/1.1)
   std::string_view method;        // from the request line, once it is complete and valid
   std::string_view target;
-  std::string_view origin;      // the Origin field, once read (CORS headers on a rejection too)
-  bool http11 = true;           // false: HTTP/1.0
-  std::size_t body_offset = 0;  // where the body starts in the input (after the head)
+  std::string_view origin;  // the Origin field, once read (CORS headers on a rejection too)
+  std::string_view accept_language;  // the Accept-Language field, once read (a rejection's too)
+  bool http11 = true;                // false: HTTP/1.0
+  std::size_t body_offset = 0;       // where the body starts in the input (after the head)
 
   // reject:
-  int status = 0;           // 400 or 413
-  std::string_view reason;  // a fixed sentence for the problem's detail
+  HttpFault fault = HttpFault::malformed_request_line;
 };
 
 // Frames the request at the start of `input` (unread bytes of a connection). When given,

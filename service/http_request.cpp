@@ -1,14 +1,68 @@
 #include "service/http_request.h"
 
-#include "api/header_text.h"
-#include "service/http_connection.h"
-#include "service/httplib_adapter.h"
+#include "domain/common/ascii_text.h"
+#include "service/socket_addresses.h"
 
 namespace cutcalc::service {
+namespace {
+
+// The value of the `digits` hex digits at `at`, or -1 when they are not all there.
+int hex_value(std::string_view text, std::size_t at, std::size_t digits) {
+  if (at + digits > text.size()) return -1;
+  int value = 0;
+  for (const char c : text.substr(at, digits)) {
+    const int digit = c >= '0' && c <= '9'   ? c - '0'
+                      : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                      : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                             : -1;
+    if (digit < 0) return -1;
+    value = value * 16 + digit;
+  }
+  return value;
+}
+
+// `code` (at most U+FFFF) as UTF-8; nothing for a surrogate, which is no character.
+void append_utf8(int code, std::string& out) {
+  const auto byte = [](int bits) { return static_cast<char>(bits); };
+  if (code < 0x80) {
+    out += byte(code);
+  } else if (code < 0x800) {
+    out += byte(0xC0 | (code >> 6));
+    out += byte(0x80 | (code & 0x3F));
+  } else if (code < 0xD800 || code >= 0xE000) {
+    out += byte(0xE0 | (code >> 12));
+    out += byte(0x80 | ((code >> 6) & 0x3F));
+    out += byte(0x80 | (code & 0x3F));
+  }
+}
+
+}  // namespace
+
+std::string percent_decode_path(std::string_view path) {
+  std::string decoded;
+  decoded.reserve(path.size());
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i] == '%' && i + 1 < path.size() && path[i + 1] == 'u') {
+      if (const int code = hex_value(path, i + 2, 4); code >= 0) {
+        append_utf8(code, decoded);
+        i += 5;
+        continue;
+      }
+    } else if (path[i] == '%') {
+      if (const int byte = hex_value(path, i + 1, 2); byte >= 0) {
+        decoded += static_cast<char>(byte);
+        i += 2;
+        continue;
+      }
+    }
+    decoded += path[i];  // '+' included: it is not a space in a path
+  }
+  return decoded;
+}
 
 std::string_view HttpRequest::header(std::string_view name) const {
   for (const HeaderField& field : fields) {
-    if (api::iequals_ascii(field.name, name)) return field.value;
+    if (domain::iequals_ascii(field.name, name)) return field.value;
   }
   return {};
 }
@@ -19,7 +73,7 @@ bool HttpRequest::wants_keep_alive() const {
   bool close = false;
   bool keep_alive = false;
   for (const HeaderField& field : fields) {
-    if (!api::iequals_ascii(field.name, "connection")) continue;
+    if (!domain::iequals_ascii(field.name, "connection")) continue;
     std::string_view rest = field.value;
     while (!rest.empty()) {
       const std::size_t comma = rest.find(',');
@@ -31,8 +85,8 @@ bool HttpRequest::wants_keep_alive() const {
       while (!token.empty() && (token.back() == ' ' || token.back() == '\t')) {
         token.remove_suffix(1);
       }
-      close = close || api::iequals_ascii(token, "close");
-      keep_alive = keep_alive || api::iequals_ascii(token, "keep-alive");
+      close = close || domain::iequals_ascii(token, "close");
+      keep_alive = keep_alive || domain::iequals_ascii(token, "keep-alive");
     }
   }
   return !close && (http11 || keep_alive);

@@ -18,6 +18,13 @@ struct HeaderField {
   std::string_view value;  // without surrounding whitespace
 };
 
+// Where the server is in its life (README.md, "Restarts"):
+enum class ServerPhase {
+  serving,   // keep-alive as usual
+  draining,  // SIGTERM, lame duck: the listener accepts still; every response says close
+  stopped    // the listener is closed: idle connections close after the drain grace
+};
+
 struct HttpRequest {
   std::string_view method;
   std::string_view target;  // as sent
@@ -26,6 +33,10 @@ struct HttpRequest {
   std::span<const HeaderField> fields;
   std::string_view body;                       // the content (a chunked body decoded)
   const SocketAddresses* addresses = nullptr;  // of the connection; null in unit tests
+  // The server's phase when the engine framed the request, read once: the engine's keep-alive
+  // decision and the app's answer (/readyz) both use this one snapshot, so a SIGTERM between them
+  // cannot make them disagree.
+  ServerPhase phase = ServerPhase::serving;
 
   // The value of the first field named `name` (case-insensitive), or empty.
   [[nodiscard]] std::string_view header(std::string_view name) const;
@@ -34,6 +45,11 @@ struct HttpRequest {
   // The peer's IP, or "" when unknown.
   [[nodiscard]] std::string_view remote_ip() const;
 };
+
+// `path` with its %XX escapes decoded, and the %uXXXX ones (a non-standard form that cpp-httplib,
+// which routed cutcalc's requests before its own engine, decodes as UTF-8; kept so that a path
+// means what it meant then). A '%' that starts no escape stays; '+' stays '+'.
+std::string percent_decode_path(std::string_view path);
 
 // The path of `target` (up to '?'), percent-decoded when it holds a '%' (into `scratch`).
 // An absolute-form target ("http://host/path") gives its path; "*" gives "*".

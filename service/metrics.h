@@ -11,7 +11,7 @@
 #include <string_view>
 #include <tuple>
 
-#include "service/http_connection.h"
+#include "service/engine_counters.h"
 #include "service/memory_budget.h"
 
 namespace cutcalc::service {
@@ -43,7 +43,7 @@ class Metrics {
   std::atomic<std::int64_t> in_flight_{0};
 };
 
-// The HTTP engine's connection counters (service/http_connection.h) in the same format.
+// The HTTP engine's connection counters (service/engine_counters.h) in the same format.
 std::string render_connection_metrics(const ConnectionCounters& counters,
                                       std::size_t open_connections, const MemoryBudget& budget);
 

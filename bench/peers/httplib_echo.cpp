@@ -102,8 +102,7 @@ int serve_with_engine(const Options& options, sigset_t stop_signals) {
       },
       [](const EngineError& error) {
         HttpResponse response;
-        response.status = error.status;
-        response.set_content(std::string(error.detail), "text/plain");
+        response.status = http_status(error.fault);
         return closing_response(response);
       },
       [&listener] { return listener.stopped() ? ServerPhase::stopped : ServerPhase::serving; },

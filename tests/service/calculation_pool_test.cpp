@@ -77,11 +77,11 @@ class HeldEngine {
     engine_ = std::make_unique<EventLoopEngine>(
         settings, [this](const HttpRequest& request) { return serve(request); },
         [](const EngineError& error) {
-          return "HTTP/1.1 " + std::to_string(error.status) +
+          return "HTTP/1.1 " + std::to_string(http_status(error.fault)) +
                  " Engine\r\nContent-Length: 0\r\nX-Busy: " +
-                 (error.busy == EngineBusy::memory    ? "memory"
-                  : error.busy == EngineBusy::uploads ? "uploads"
-                                                      : "none") +
+                 (error.fault == HttpFault::memory_busy    ? "memory"
+                  : error.fault == HttpFault::uploads_busy ? "uploads"
+                                                           : "none") +
                  "\r\nConnection: close\r\n\r\n";
         },
         [] { return ServerPhase::serving; }, counters_);

@@ -115,6 +115,34 @@ TEST(HttpEngine, UnparsableRequestGetsAProblemWithInstanceAndRequestId) {
             "/healthz");
 }
 
+// The engine's own refusals come from the one catalogue: English unless the head asked for Russian
+// before the fault was found.
+TEST(HttpEngine, ItsOwnErrorsSpeakTheLanguageTheHeadAskedFor) {
+  const std::string bad_length = "Content-Length: +2\r\n\r\n{}";
+  const Outcome english =
+      send_and_read_to_close("POST /v1/roughness/groove-wall HTTP/1.1\r\nHost: a\r\n" + bad_length);
+  expect_single_problem(english, 400, "urn:cutcalc:problem:bad-request");
+  EXPECT_EQ(english.parsed.responses.back().header("content-language"), "en");
+  EXPECT_EQ(nlohmann::json::parse(english.parsed.responses.back().body).value("detail", ""),
+            "the HTTP request could not be processed: Content-Length must be one number (digits "
+            "only)");
+
+  const Outcome russian = send_and_read_to_close(
+      "POST /v1/roughness/groove-wall HTTP/1.1\r\nHost: a\r\nAccept-Language: ru\r\n" + bad_length);
+  expect_single_problem(russian, 400, "urn:cutcalc:problem:bad-request");
+  EXPECT_EQ(russian.parsed.responses.back().header("content-language"), "ru");
+  EXPECT_EQ(nlohmann::json::parse(russian.parsed.responses.back().body).value("detail", ""),
+            "HTTP-запрос не удалось обработать: Content-Length должен быть одним числом (только "
+            "цифры)");
+
+  const Outcome too_large = send_and_read_to_close(
+      "POST /v1/roughness/groove-wall HTTP/1.1\r\nHost: a\r\nAccept-Language: ru\r\n"
+      "Content-Length: 99999999\r\n\r\n");
+  expect_single_problem(too_large, 413, "urn:cutcalc:problem:payload-too-large");
+  EXPECT_EQ(nlohmann::json::parse(too_large.parsed.responses.back().body).value("detail", ""),
+            "тело запроса превышает допустимый размер");
+}
+
 TEST(HttpEngine, BodyOfA405IsReadAsBodyNotAsTheNextRequest) {
   const std::string smuggled = get_request("/version");
   RawConnection connection(TestServer::shared().port());

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <string_view>
 
-namespace cutcalc::api {
+namespace cutcalc::domain {
 
 constexpr char ascii_lower(char c) {
   return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
@@ -25,4 +25,4 @@ constexpr std::string_view trim_space(std::string_view text) {
   return text;
 }
 
-}  // namespace cutcalc::api
+}  // namespace cutcalc::domain

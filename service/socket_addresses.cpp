@@ -1,4 +1,4 @@
-#include "service/http_connection.h"
+#include "service/socket_addresses.h"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>

@@ -1,6 +1,6 @@
 // SocketAddresses and UniqueFd: what the engine keeps per connection.
 
-#include "service/http_connection.h"
+#include "service/socket_addresses.h"
 
 #include <fcntl.h>
 #include <sys/socket.h>

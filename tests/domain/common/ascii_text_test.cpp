@@ -1,10 +1,10 @@
 // Header text compared as RFC 9110 says: ASCII case-insensitively, whitespace around ignored.
 
-#include "api/header_text.h"
+#include "domain/common/ascii_text.h"
 
 #include <gtest/gtest.h>
 
-namespace cutcalc::api {
+namespace cutcalc::domain {
 namespace {
 
 TEST(HeaderText, NamesCompareIgnoringAsciiCaseOnly) {
@@ -25,4 +25,4 @@ TEST(HeaderText, TrimmingRemovesSpacesAndTabsAroundOnly) {
 }
 
 }  // namespace
-}  // namespace cutcalc::api
+}  // namespace cutcalc::domain

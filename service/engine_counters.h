@@ -1,35 +1,12 @@
 #pragma once
-// What the engine (service/http_event_loop.h) keeps per connection besides its buffers: the
-// socket's addresses, looked up once; and the engine's counters.
+// The HTTP engine's counters (service/http_event_loop.h), rendered by service/metrics.h.
 
 #include <atomic>
-#include <cstddef>
 #include <cstdint>
-#include <optional>
-#include <string>
-#include <string_view>
 
 #include "service/work_pool.h"
 
 namespace cutcalc::service {
-
-// The addresses of a connected socket, looked up once per connection and only when asked for
-// (the access log's remote address).
-class SocketAddresses {
- public:
-  explicit SocketAddresses(int fd) : fd_(fd) {}
-  struct Address {
-    std::string ip;  // empty for a non-IP socket (e.g. a socketpair)
-    int port = 0;
-  };
-  const Address& peer() const;
-  const Address& local() const;
-
- private:
-  int fd_;
-  mutable std::optional<Address> peer_;
-  mutable std::optional<Address> local_;
-};
 
 // Counters kept by the engine (monotonic, for metrics).
 struct ConnectionCounters {
