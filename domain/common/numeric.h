@@ -20,6 +20,17 @@ inline double rad_to_deg(double rad) { return rad * kDegPerRad; }
 // (lathe-flat.md F7) have always been computed so. It differs from rad_to_deg in the last bit for
 // some angles, so the two are not interchangeable without changing printed results.
 inline double rad_times_180_over_pi(double rad) { return rad * 180.0 / std::numbers::pi; }
+// Degrees to radians as (x * pi) / 180, two roundings: the grooving cycle's phi1 (grooving-cycle.md
+// K22) has always been computed so; like rad_times_180_over_pi it can differ from deg_to_rad in the
+// last bit, and the side chip thickness is answered to the last digit.
+inline double deg_times_pi_over_180(double deg) { return deg * std::numbers::pi / 180.0; }
+
+// A count of passes, layers or revolutions for the quotient q = what is to be cut / what one of
+// them cuts, at least 1: ceil(q - 1e-9) (entry-and-main-time.md E24, polygon-holes.md P22,
+// lathe-flat.md F17, grooving-cycle.md K7), so that a quotient rounded just above a whole number
+// (0.07 / 0.01 = 7.000000000000001) is not one more. A double: the caller checks it against its cap
+// before it converts it to an integer.
+inline double ceil_count(double q) { return std::max(1.0, std::ceil(q - 1e-9)); }
 
 // sqrt(p^2 - q^2) evaluated as sqrt((p - q)(p + q)) so that tangency (p = q) is exactly 0 and
 // nearly equal arguments keep their digits; tiny negative products from rounding clamp to 0.

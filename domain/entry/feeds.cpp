@@ -2,20 +2,19 @@
 
 #include "domain/entry/feeds.h"
 
-#include <numbers>
+#include "domain/common/cutting_speed.h"
 
 namespace cutcalc::domain::entry::detail {
 
 namespace {
 
-// E30: n = 1000 v / (pi D), not rounded to machine steps (section 12).
+// E30 with the request's spindle speed or cutting speed (section 12).
 double spindle_speed_rpm(const std::variant<SpindleSpeed, CuttingSpeed>& speed,
                          double cutter_diameter_mm) {
   if (const auto* rpm = std::get_if<SpindleSpeed>(&speed)) {
     return rpm->rpm;
   }
-  const double v = std::get<CuttingSpeed>(speed).m_per_min;  // v
-  return 1000.0 * v / (std::numbers::pi * cutter_diameter_mm);
+  return spindle_speed_rpm_at(std::get<CuttingSpeed>(speed).m_per_min, cutter_diameter_mm);
 }
 
 // E31-E33 at spindle speed n and feed per tooth S_z; the entry feed rule is the request's one

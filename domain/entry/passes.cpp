@@ -4,25 +4,18 @@
 
 #include <cmath>
 
+#include "domain/common/numeric.h"
+
 namespace cutcalc::domain::entry::detail {
-
-namespace {
-
-// E24: a quotient that should be an integer may round just above it; without the guard 6/2 could
-// become 4 passes (inferred in the spec).
-constexpr double kCeilGuard = 1e-9;
-
-}  // namespace
 
 // E24
 Result<std::size_t> pass_count(double allowance_mm, double cut_mm, ErrorCode too_many) {
-  const double count = std::ceil(allowance_mm / cut_mm - kCeilGuard);  // N
-  // Written so that a NaN or an infinite quotient also fails before the integer conversion.
+  const double count = ceil_count(allowance_mm / cut_mm);  // N
+  // Written so that an infinite quotient also fails before the integer conversion.
   if (!(count <= static_cast<double>(kMaxPassCount))) {
     return make_limit_error(too_many, static_cast<double>(kMaxPassCount));
   }
-  // A quotient below the guard (allowance far thinner than a cut) still needs one pass.
-  return count < 1.0 ? std::size_t{1} : static_cast<std::size_t>(count);
+  return static_cast<std::size_t>(count);
 }
 
 // E25 (not the paper's H - t floor(H/t), which is 0 when H/t is an integer) and E37

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "domain/common/cutting_speed.h"
+#include "domain/common/numeric.h"
 #include "domain/program/program_options.h"
 
 namespace cutcalc::domain::grooving {
@@ -109,7 +111,7 @@ std::vector<Warning> warnings(const GroovingCycleParams& p, const GroovingCycleR
   const SpindleMode& spindle = p.spindle;
   if (spindle.spindle_speed_rpm) {
     out = program::limit_warnings(*spindle.spindle_speed_rpm, {}, {spindle.max_spindle_rpm, {}});
-  } else if (1000.0 * *spindle.cutting_speed_m_per_min / (std::numbers::pi * r.bottom_diameter_mm) >
+  } else if (spindle_speed_rpm_at(*spindle.cutting_speed_m_per_min, r.bottom_diameter_mm) >
              *spindle.max_spindle_rpm) {
     out.push_back({WarningCode::spindle_speed_limited,
                    "G96 reaches the " + number_text(*spindle.max_spindle_rpm) +
@@ -146,7 +148,7 @@ Result<GroovingCycleResult> compute_grooving_cycle(const GroovingCycleParams& pa
   if (!width.ok()) return width.error();
   const double s0 = params.feed_per_rev_mm;
   const auto [h, db] = depth.value();
-  const double revolutions = std::max(1.0, std::ceil(h / s0 - 1e-9));  // K7
+  const double revolutions = ceil_count(h / s0);  // K7
   if (revolutions > kMaxRevolutions) {
     return make_limit_error(ErrorCode::too_many_revolutions, kMaxRevolutions);
   }
@@ -174,7 +176,7 @@ Result<GroovingCycleResult> compute_grooving_cycle(const GroovingCycleParams& pa
   times(params, r);
 
   r.chip_thickness_mm = s;  // K22
-  const double phi1 = params.minor_edge_angle_deg * std::numbers::pi / 180.0;
+  const double phi1 = deg_times_pi_over_180(params.minor_edge_angle_deg);
   r.side_chip_thickness_mm = std::max(0.0, r.shift_mm * std::cos(phi1) - s * std::sin(phi1));
   r.wall_pitch_mm = 4.0 * s;  // K21
   const auto wall = wall_rz(params, r.wall_pitch_mm);

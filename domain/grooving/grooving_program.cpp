@@ -1,6 +1,5 @@
 #include "domain/grooving/grooving_program.h"
 
-#include <memory>
 #include <utility>
 
 #include "domain/program/lathe_program.h"
@@ -16,8 +15,6 @@ using program::CoolantOn;
 using program::Dialect;
 using program::Dwell;
 using program::fanuc_spindle_words;
-using program::file_name;
-using program::lathe_program_error;
 using program::LatheBlock;
 using program::LatheFeed;
 using program::LatheModalLines;
@@ -78,37 +75,23 @@ std::vector<LatheBlock> blocks(const GroovingCycleParams& params, const Grooving
 Result<GroovingProgram> write_grooving_program(const GroovingCycleParams& params,
                                                const GroovingCycleResult& cycle,
                                                const ProgramOptions& options) {
-  GroovingProgram out;
-  out.warnings = cycle.warnings;
+  std::vector<Warning> warnings = cycle.warnings;
   const LatheBlock spindle = spindle_block(params.spindle);
   if (options.dialect == Dialect::fanuc && fanuc_rounds(spindle, options.units)) {
-    out.warnings.push_back({WarningCode::spindle_speed_rounded,
-                            "a Fanuc S word takes no decimals: v and n are rounded half up, the "
-                            "G50 limit down (times use the exact values)"});
+    warnings.push_back({WarningCode::spindle_speed_rounded,
+                        "a Fanuc S word takes no decimals: v and n are rounded half up, the "
+                        "G50 limit down (times use the exact values)"});
   }
-  auto written = std::make_shared<LatheProgram>();
-  LatheProgram& program = *written;
+  LatheProgram program;
   program.modal = kModalLines;
   program.comments.emplace_back("CUTCALC GROOVING CYCLE V RAZVOD");
-  for (const Warning& warning : out.warnings) {
+  for (const Warning& warning : warnings) {
     program.comments.emplace_back(warning_name(warning.code));
   }
   program.blocks = blocks(params, cycle, spindle, options);
-  if (auto error = lathe_program_error(program, options)) return std::move(*error);
-  out.program = std::move(written);
-  out.options = options;
-  out.file_name = file_name(options);
-  return out;
-}
-
-std::unique_ptr<TextSource> open_program_text(const GroovingProgram& program) {
-  return program::open_lathe_program(program.program, program.options);
-}
-
-std::string program_text(const GroovingProgram& program) {
-  std::string text;
-  write_all(*open_program_text(program), text);
-  return text;
+  auto file = program::lathe_program_file(std::move(program), options);
+  if (!file.ok()) return file.error();
+  return GroovingProgram{std::move(file.value()), std::move(warnings)};
 }
 
 }  // namespace cutcalc::domain::grooving

@@ -1,7 +1,6 @@
 #include "domain/lathe_flat/flat_program.h"
 
 #include <cctype>
-#include <memory>
 #include <utility>
 
 #include "domain/common/numeric.h"
@@ -14,10 +13,8 @@ namespace {
 using program::decimals_of;
 using program::FeedMode;
 using program::FeedModeChange;
-using program::file_name;
 using program::format_fixed;
 using program::InverseTimeFeed;
-using program::lathe_program_error;
 using program::LatheBlock;
 using program::LatheFeed;
 using program::LatheModalLines;
@@ -99,8 +96,7 @@ Result<FlatProgram> write_flat_program(const LatheFlatParams& params, const Lath
   if (!every_step_prints_a_move(flat, options)) {
     return make_error(ErrorCode::steps_below_resolution);
   }
-  auto written = std::make_shared<LatheProgram>();
-  LatheProgram& program = *written;
+  LatheProgram program;
   program.modal = kModalLines;
   program.comments = {"CUTCALC LATHE FLAT",
                       "C AXIS: SPINDLE IN POSITION MODE AND DRIVEN TOOL RUNNING BEFORE THIS "
@@ -109,18 +105,7 @@ Result<FlatProgram> write_flat_program(const LatheFlatParams& params, const Lath
     program.comments.push_back("WARNING " + upper(warning_name(warning.code)));
   }
   program.blocks = blocks(params, flat);
-  if (auto error = lathe_program_error(program, options)) return std::move(*error);
-  return FlatProgram{std::move(written), options, file_name(options)};
-}
-
-std::unique_ptr<TextSource> open_program_text(const FlatProgram& program) {
-  return program::open_lathe_program(program.program, program.options);
-}
-
-std::string program_text(const FlatProgram& program) {
-  std::string text;
-  write_all(*open_program_text(program), text);
-  return text;
+  return program::lathe_program_file(std::move(program), options);
 }
 
 }  // namespace cutcalc::domain::lathe_flat

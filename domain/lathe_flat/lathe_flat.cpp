@@ -8,6 +8,7 @@
 #include "domain/common/numeric.h"
 #include "domain/lathe_flat/flatness.h"
 #include "domain/program/program_options.h"
+#include "domain/program/program_size.h"
 
 namespace cutcalc::domain::lathe_flat {
 namespace {
@@ -41,10 +42,10 @@ Result<double> axis_distance(const LatheFlatParams& p) {
   return d;
 }
 
-// F17: L = ceil(t/a - 1e-9), at least 1; a double, since a very thin layer gives more layers than
-// an int holds (the block cap refuses those before any list is made).
+// F17: L = ceil(t/a - 1e-9), at least 1 (ceil_count); a double, since a very thin layer gives more
+// layers than an int holds (the block cap refuses those before any list is made).
 double layer_count(double t, const std::optional<double>& layer_depth_mm) {
-  return std::max(1.0, std::ceil(t / layer_depth_mm.value_or(t) - 1e-9));
+  return ceil_count(t / layer_depth_mm.value_or(t));
 }
 
 // F17: L equal layers, t_j = j t / L, the last exactly t.
@@ -97,8 +98,8 @@ Result<LatheFlatResult> compute_lathe_flat(const LatheFlatParams& p) {
 
   const double layers = layer_count(r.flat_depth_mm, p.layer_depth_mm);
   const double blocks = 2.0 * n * p.flats * layers;  // F19
-  if (blocks > kMaxCutBlocks)
-    return make_limit_error(ErrorCode::too_many_cut_blocks, kMaxCutBlocks);
+  if (blocks > program::kMaxProgramBlocks)
+    return make_limit_error(ErrorCode::too_many_cut_blocks, program::kMaxProgramBlocks);
   r.cut_blocks = static_cast<int>(blocks);
   r.layers = static_cast<int>(layers);
   r.layer_depths_mm = layer_depths(r.flat_depth_mm, r.layers);

@@ -13,9 +13,6 @@
 
 namespace cutcalc::domain::lathe_flat {
 
-// Section 6.3: the size cap of a program.
-inline constexpr double kMaxCutBlocks = 200000;
-
 struct LatheFlatParams {
   double part_diameter_mm = 0.0;                // D
   std::optional<double> flat_depth_mm;          // t   (exactly one of t, b, d, s)
@@ -62,7 +59,8 @@ struct LatheFlatResult {
 
 // F1-F21. Errors: flat_outside_part (t >= R2, d >= R2, s >= D or b >= D: the given one),
 // flat_too_small (a flat or layer so shallow against the part that d rounds to R2 in doubles),
-// tolerance_unmet (no N <= 1000 meets it), too_many_cut_blocks (over kMaxCutBlocks; limit).
+// tolerance_unmet (no N <= 1000 meets it), too_many_cut_blocks (over program::kMaxProgramBlocks
+// cutting blocks; limit).
 Result<LatheFlatResult> compute_lathe_flat(const LatheFlatParams& params);
 
 }  // namespace cutcalc::domain::lathe_flat

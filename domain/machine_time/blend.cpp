@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "domain/common/numeric.h"
 #include "domain/machine_time/planner.h"
 
 namespace cutcalc::domain::machine_time {
@@ -113,7 +114,7 @@ TangentCheck setup_tangent(Segment& prev, Segment& next, const Machine& machine)
   const Vec3 u1 = prev.end_tangent;
   const Vec3 u2 = next.start_tangent;
   // pmCartCartAntiParallel within 2 degrees: a reversal stops.
-  const double sharp_epsilon = std::pow(kPi * (2.0 / 180.0), 2.0);
+  const double sharp_epsilon = std::pow(deg_to_rad(2.0), 2.0);
   if (dot(u1 + u2, u1 + u2) < sharp_epsilon) {
     prev.term = Termination::stop;
     next.blend_prev = false;

@@ -48,6 +48,13 @@ GMeaning common(int code) {
       return refused(GAction::compensation_on);
     case 490:
       return of(GAction::ignored, GGroup::tool_length);
+    case 540:
+    case 550:
+    case 560:
+    case 570:
+      return of(GAction::ignored, GGroup::work_offset);  // machine-time.md 4: offsets as 0
+    case 640:
+      return of(GAction::blend, GGroup::path);
     case 800:
       return motion(GAction::cancel_motion);
     case 960:
@@ -59,6 +66,25 @@ GMeaning common(int code) {
   }
   if (is_drilling_cycle(code)) return refused(GAction::canned_cycle);
   return kUnsupported;
+}
+
+// G90, G91 and G93-G95 as LinuxCNC, Sinumerik and Fanuc's milling controls read them (a Fanuc
+// lathe in G-code system A has other meanings for them), then the common codes.
+GMeaning distance_and_feed_modes(int code) {
+  switch (code) {
+    case 900:
+      return of(GAction::absolute, GGroup::distance);
+    case 910:
+      return of(GAction::incremental, GGroup::distance);
+    case 930:
+      return of(GAction::inverse_time, GGroup::feed_mode);
+    case 940:
+      return of(GAction::per_minute, GGroup::feed_mode);
+    case 950:
+      return of(GAction::per_revolution, GGroup::feed_mode);
+    default:
+      return common(code);
+  }
 }
 
 GMeaning linuxcnc(int code) {
@@ -76,10 +102,6 @@ GMeaning linuxcnc(int code) {
       return refused(GAction::compensation_on);
     case 430:
       return of(GAction::ignored, GGroup::tool_length);
-    case 540:
-    case 550:
-    case 560:
-    case 570:
     case 580:
     case 590:
     case 591:
@@ -90,8 +112,6 @@ GMeaning linuxcnc(int code) {
       return of(GAction::exact_path, GGroup::path);
     case 611:
       return of(GAction::exact_stop, GGroup::path);
-    case 640:
-      return of(GAction::blend, GGroup::path);
     case 700:  // lathe finishing and roughing cycles of 2.9
     case 710:
     case 711:
@@ -100,10 +120,6 @@ GMeaning linuxcnc(int code) {
     case 721:
     case 722:
       return refused(GAction::canned_cycle);
-    case 900:
-      return of(GAction::absolute, GGroup::distance);
-    case 910:
-      return of(GAction::incremental, GGroup::distance);
     case 901:
       return of(GAction::arc_centre_absolute, GGroup::arc_distance);
     case 911:
@@ -112,17 +128,11 @@ GMeaning linuxcnc(int code) {
       return of(GAction::set_origin, GGroup::non_modal);
     case 921:
       return of(GAction::cancel_origin, GGroup::non_modal);
-    case 930:
-      return of(GAction::inverse_time, GGroup::feed_mode);
-    case 940:
-      return of(GAction::per_minute, GGroup::feed_mode);
-    case 950:
-      return of(GAction::per_revolution, GGroup::feed_mode);
     case 980:  // canned cycle return level: no cycle runs
     case 990:
       return kIgnored;
     default:
-      return common(code);
+      return distance_and_feed_modes(code);
   }
 }
 
@@ -146,19 +156,13 @@ GMeaning fanuc(MachineKind kind, int code) {
       return kIgnored;
     case 500:  // lathe: spindle clamp or coordinate setting; mill: scaling off
       return lathe ? of(GAction::set_origin, GGroup::non_modal) : kIgnored;
-    case 540:
     case 541:
-    case 550:
-    case 560:
-    case 570:
     case 580:
     case 590:
       return of(GAction::ignored, GGroup::work_offset);  // machine-time.md 4: offsets as 0
     // machine-time.md 7: Fanuc has no exact path mode of its own; G61 is its exact stop mode.
     case 610:
       return of(GAction::exact_stop, GGroup::path);
-    case 640:
-      return of(GAction::blend, GGroup::path);
     case 650:
     case 660:
       return refused(GAction::subroutine);
@@ -177,23 +181,13 @@ GMeaning fanuc(MachineKind kind, int code) {
     return common(code);
   }
   switch (code) {
-    case 900:
-      return of(GAction::absolute, GGroup::distance);
-    case 910:
-      return of(GAction::incremental, GGroup::distance);
     case 920:
       return of(GAction::set_origin, GGroup::non_modal);
-    case 930:
-      return of(GAction::inverse_time, GGroup::feed_mode);
-    case 940:
-      return of(GAction::per_minute, GGroup::feed_mode);
-    case 950:
-      return of(GAction::per_revolution, GGroup::feed_mode);
     case 980:  // canned cycle return level: no cycle runs
     case 990:
       return kIgnored;
     default:
-      return common(code);
+      return distance_and_feed_modes(code);
   }
 }
 
@@ -211,11 +205,7 @@ GMeaning sinumerik(int code) {
       return of(GAction::units_inch, GGroup::units);
     case 7100:
       return of(GAction::units_mm, GGroup::units);
-    case 5000:  // G500: settable work offsets off
-    case 540:
-    case 550:
-    case 560:
-    case 570:
+    case 5000:                                           // G500: settable work offsets off
       return of(GAction::ignored, GGroup::work_offset);  // machine-time.md 4: offsets as 0
     case 600:
       return of(GAction::exact_stop, GGroup::path);
@@ -223,23 +213,11 @@ GMeaning sinumerik(int code) {
     case 6020:
     case 6030:
       return kIgnored;
-    case 640:
-      return of(GAction::blend, GGroup::path);
     case 6410:
       return of(GAction::blend_rounded, GGroup::path);
     case 4500:  // corner behaviour of cutter compensation, which is off
     case 4510:
       return kIgnored;
-    case 900:
-      return of(GAction::absolute, GGroup::distance);
-    case 910:
-      return of(GAction::incremental, GGroup::distance);
-    case 930:
-      return of(GAction::inverse_time, GGroup::feed_mode);
-    case 940:
-      return of(GAction::per_minute, GGroup::feed_mode);
-    case 950:
-      return of(GAction::per_revolution, GGroup::feed_mode);
     default:
       break;
   }
@@ -247,7 +225,7 @@ GMeaning sinumerik(int code) {
   if (code >= 5050 && code <= 5990 && code % 10 == 0) {
     return of(GAction::ignored, GGroup::work_offset);
   }
-  return common(code);
+  return distance_and_feed_modes(code);
 }
 
 }  // namespace

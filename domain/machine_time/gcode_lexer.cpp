@@ -314,12 +314,9 @@ class LineLexer {
   bool named_value(std::size_t begin, std::size_t value_at, Named which) {
     std::size_t at = value_at;
     while (at < line_.size() && is_space(line_[at])) ++at;
-    const char* first = line_.data() + at;
     double value = 0.0;
-    const char* last = scan(first, line_.data() + line_.size(), value);
-    if (last == first) return refuse_value(begin, at);
-    const std::size_t end = static_cast<std::size_t>(last - line_.data());
-    if (!(std::fabs(value) <= kLargestNumber)) return refuse(Refusal::malformed, begin, end);
+    std::size_t end = 0;
+    if (!word_number(begin, at, value, end)) return false;
     const unsigned bit = 1U << static_cast<unsigned>(which);
     if ((block_.named & bit) != 0) return refuse(Refusal::malformed, begin, end);
     block_.named = static_cast<std::uint8_t>(block_.named | bit);
@@ -327,6 +324,17 @@ class LineLexer {
     block_.named_ref[static_cast<std::size_t>(which)] = {begin + 1, text(begin, end)};
     note_word(begin, end);
     i_ = end;
+    return true;
+  }
+
+  // The number at `at` of the word that begins at `begin`: its `value` and `end`; false with the
+  // word refused when there is none or it is beyond kLargestNumber.
+  bool word_number(std::size_t begin, std::size_t at, double& value, std::size_t& end) {
+    const char* first = line_.data() + at;
+    const char* last = scan(first, line_.data() + line_.size(), value);
+    if (last == first) return refuse_value(begin, at);
+    end = static_cast<std::size_t>(last - line_.data());
+    if (!(std::fabs(value) <= kLargestNumber)) return refuse(Refusal::malformed, begin, end);
     return true;
   }
 
@@ -369,16 +377,13 @@ class LineLexer {
       while (at < line_.size() && is_space(line_[at])) ++at;
       if (at < line_.size() && line_[at] == '"' && letter == 'T') return tool_name(begin, at);
     }
-    const char* first = line_.data() + at;
     double value = 0.0;
-    const char* last = scan(first, line_.data() + line_.size(), value);
-    if (last == first) return refuse_value(begin, at);
-    const std::size_t end = static_cast<std::size_t>(last - line_.data());
-    if (!(std::fabs(value) <= kLargestNumber)) return refuse(Refusal::malformed, begin, end);
+    std::size_t end = 0;
+    if (!word_number(begin, at, value, end)) return false;
     const WordRef ref{begin + 1, text(begin, end)};
     i_ = end;
     note_word(begin, end);
-    if (letter == 'G' || letter == 'M') return code_word(letter, *first, value, ref);
+    if (letter == 'G' || letter == 'M') return code_word(letter, line_[at], value, ref);
     const std::size_t index = letter_index(letter);
     if (block_.has(letter)) return refuse(Refusal::malformed, begin, end);  // a word twice
     block_.letters |= letter_bit(letter);

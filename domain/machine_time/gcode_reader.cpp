@@ -367,14 +367,17 @@ class Reader {
   void emit_stop() { emit_point(MoveKind::untimed_stop); }
 
   // A move that goes nowhere: a stop or a flush of the queue.
-  void emit_point(MoveKind kind) {
+  void emit_point(MoveKind kind) { sink_(point_move(kind)); }
+
+  // A move of `kind` that stays where the tool is.
+  Move point_move(MoveKind kind) const {
     Move move;
     move.kind = kind;
     move.line = line_;
     move.start = position_;
     move.end = position_;
     move.path = path_;
-    sink_(move);
+    return move;
   }
 
   // ---- G4
@@ -419,12 +422,7 @@ class Reader {
         break;
     }
     if (seconds < 0.0) return fail(Refusal::malformed, word);
-    Move move;
-    move.kind = MoveKind::dwell;
-    move.line = line_;
-    move.start = position_;
-    move.end = position_;
-    move.path = path_;
+    Move move = point_move(MoveKind::dwell);
     move.dwell_s = seconds;
     sink_(move);
     return true;

@@ -6,7 +6,6 @@
 #include "domain/program/dialect_writer.h"
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <cmath>
 #include <memory>
@@ -29,17 +28,6 @@ double parse(const std::string& text) {
 }
 
 }  // namespace
-
-std::string fmt4(double value) {
-  std::array<char, 400> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                    std::chars_format::fixed, 4);
-  std::string text(buffer.data(), result.ptr);
-  if (text == "-0.0000") {
-    text = "0.0000";
-  }
-  return text;
-}
 
 std::string NumberFormat::operator()(double mm) const {
   return program::format_fixed(mm * units_per_mm, decimals);
@@ -87,7 +75,7 @@ PrintedLoop print_loop(const std::vector<LoopBlock>& blocks, double scale,
 // P22
 Layers split_depth(double depth_mm, double step_down_mm) {
   Layers layers;
-  layers.n = std::max(1.0, std::ceil(depth_mm / step_down_mm - 1e-9));
+  layers.n = ceil_count(depth_mm / step_down_mm);
   layers.dz = depth_mm / layers.n;
   return layers;
 }
@@ -292,23 +280,24 @@ std::unique_ptr<TextSource> open_program(std::shared_ptr<const PolygonProgram> p
 
 std::vector<std::string> program_comments(const ProgramLayout& layout, const PrintedLoop& loop,
                                           bool ramp_feed_along_projection) {
+  const auto plain = [](double value) { return program::format_fixed(value, kPlainDecimals); };
   const bool c_axis = layout.synchronization == Synchronization::c_axis;
   const double L_p = loop.printed_length;
   const std::string flat_F =
-      fmt4(c_axis ? layout.spindle_speed_rpm * layout.feed_per_rev_mm : layout.feed_per_rev_mm);
+      plain(c_axis ? layout.spindle_speed_rpm * layout.feed_per_rev_mm : layout.feed_per_rev_mm);
   const double ramp_ratio = layout.dz_mm / L_p;
   const std::string ramp_F =
-      c_axis ? flat_F : fmt4(layout.feed_per_rev_mm * std::sqrt(1.0 + ramp_ratio * ramp_ratio));
+      c_axis ? flat_F : plain(layout.feed_per_rev_mm * std::sqrt(1.0 + ramp_ratio * ramp_ratio));
   std::vector<std::string> comments = {
-      "CUTCALC POLYGON HOLE N" + std::to_string(layout.N) + " D" + fmt4(layout.d_mm) + " A" +
-          fmt4(layout.a_mm),
-      "ROTOR " + std::to_string(layout.N - 1) + " CORNERS ON DIAMETER " + fmt4(2.0 * layout.r_mm) +
-          " ECCENTRICITY " + fmt4(layout.e_mm),
-      "LOOP LENGTH " + fmt4(L_p) + " EXACT " + fmt4(layout.exact_loop_length_mm) +
+      "CUTCALC POLYGON HOLE N" + std::to_string(layout.N) + " D" + plain(layout.d_mm) + " A" +
+          plain(layout.a_mm),
+      "ROTOR " + std::to_string(layout.N - 1) + " CORNERS ON DIAMETER " + plain(2.0 * layout.r_mm) +
+          " ECCENTRICITY " + plain(layout.e_mm),
+      "LOOP LENGTH " + plain(L_p) + " EXACT " + plain(layout.exact_loop_length_mm) +
           " BLOCKS PER LOOP " + std::to_string(loop.blocks.size()) + " TOLERANCE " +
-          fmt4(layout.tolerance_mm) + " DEVIATION " + fmt4(layout.deviation_mm),
-      "DEPTH " + fmt4(layout.depth_mm) + " IN " + std::to_string(layout.layers) + " LAYERS OF " +
-          fmt4(layout.dz_mm) + " STEP DOWN " + fmt4(layout.step_down_mm) + " LOOPS PER LAYER " +
+          plain(layout.tolerance_mm) + " DEVIATION " + plain(layout.deviation_mm),
+      "DEPTH " + plain(layout.depth_mm) + " IN " + std::to_string(layout.layers) + " LAYERS OF " +
+          plain(layout.dz_mm) + " STEP DOWN " + plain(layout.step_down_mm) + " LOOPS PER LAYER " +
           std::to_string(layout.loops_per_layer) + " FIRST LOOP OF A LAYER A HELICAL RAMP"};
   if (c_axis) {
     comments.push_back("SPINDLE AS ROTARY AXIS C IN POSITION MODE: C0 = CORNER 0 POINTING -Y");
@@ -316,13 +305,13 @@ std::vector<std::string> program_comments(const ProgramLayout& layout, const Pri
                        " MM PER MIN");
   } else {
     comments.push_back("G95 FEED PER SPINDLE REV " + flat_F + " AT " +
-                       fmt4(layout.spindle_speed_rpm) + " RPM. RAMP LOOPS " +
+                       plain(layout.spindle_speed_rpm) + " RPM. RAMP LOOPS " +
                        (ramp_feed_along_projection ? flat_F + " ALONG THE ARC PROJECTION (HTG = 0)"
                                                    : ramp_F + " ALONG THE HELIX"));
   }
-  comments.push_back("FRAME: HOLE CENTRE X0 Y0 TOP FACE Z0 SIDE 0 AT Y-" + fmt4(0.5 * layout.d_mm) +
-                     " PATH G3 CCW ROTOR CW. " + std::to_string(layout.N - 1) +
-                     " LOOPS PER SPINDLE REV");
+  comments.push_back("FRAME: HOLE CENTRE X0 Y0 TOP FACE Z0 SIDE 0 AT Y-" +
+                     plain(0.5 * layout.d_mm) + " PATH G3 CCW ROTOR CW. " +
+                     std::to_string(layout.N - 1) + " LOOPS PER SPINDLE REV");
   return comments;
 }
 
@@ -336,11 +325,11 @@ std::shared_ptr<const PolygonProgram> plain_program(const ProgramLayout& layout,
     out.line("(" + comment + ")");
   }
   out.line("G21 G17 G90 G40 G80 G94");
-  out.word('G', "0").word('Z', fmt4(layout.safe_z_mm)).end_line();
+  out.word('G', "0").word('Z', program::format_fixed(layout.safe_z_mm, kPlainDecimals)).end_line();
   program->layout = layout;
   program->loop = loop;
   program->style.words = &program::words_of(program::Dialect::linuxcnc);
-  program->style.spindle_speed = fmt4(layout.spindle_speed_rpm);
+  program->style.spindle_speed = program::format_fixed(layout.spindle_speed_rpm, kPlainDecimals);
   program->tail = "M30\n%\n";
   return program;
 }

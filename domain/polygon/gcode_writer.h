@@ -16,13 +16,13 @@
 
 namespace cutcalc::domain::polygon::detail {
 
-// printf("%.4f"), with -0.0000 written 0.0000.
-std::string fmt4(double value);
+// Today's program (no `program` object) prints its numbers with 4 decimals, in mm.
+inline constexpr int kPlainDecimals = 4;
 
-// How the program prints its numbers: today's program 4 decimals in mm; with a `program` object
-// `decimals` in the program's units (programs.md section 4).
+// How the program prints its numbers: today's program kPlainDecimals in mm; with a `program`
+// object `decimals` in the program's units (programs.md section 4).
 struct NumberFormat {
-  int decimals = 4;
+  int decimals = kPlainDecimals;
   double units_per_mm = 1.0;                              // 1 / 25.4 for inch
   [[nodiscard]] std::string operator()(double mm) const;  // a length or feed given in mm
 };

@@ -20,6 +20,7 @@
 #include "domain/polygon/rotor.h"
 #include "domain/polygon/rotor_dimensions.h"
 #include "domain/program/dialect_writer.h"
+#include "domain/program/program_size.h"
 
 namespace cutcalc::domain::polygon {
 
@@ -70,8 +71,8 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   const int loops_per_layer = params.loops_per_layer.value_or(N - 1);
   const detail::Layers layers = detail::split_depth(params.depth_mm, params.step_down_mm);
   if (!(detail::program_arc_blocks(layers.n, loops_per_layer, blocks.size()) <=
-        kMaxProgramArcBlocks)) {
-    return make_limit_error(ErrorCode::program_too_large, kMaxProgramArcBlocks);
+        program::kMaxProgramBlocks)) {
+    return make_limit_error(ErrorCode::program_too_large, program::kMaxProgramBlocks);
   }
 
   // P23, in the program's units and decimals when a `program` object is given.
@@ -152,7 +153,7 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
     const std::string s_word =
         params.program
             ? program::spindle_text(params.spindle_speed_rpm, params.program->dialect, decimals)
-            : detail::fmt4(params.spindle_speed_rpm);
+            : program::format_fixed(params.spindle_speed_rpm, detail::kPlainDecimals);
     if (program::prints_as_zero(s_word) ||
         program::prints_as_zero(program::format_fixed(feed * per_mm, decimals))) {
       return make_error(ErrorCode::word_prints_as_zero, "S or F");
@@ -160,7 +161,8 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   }
   if (!params.program) {
     result.program = detail::plain_program(layout, loop);
-    result.file_name = "polygon-hole-N" + std::to_string(N) + "-d" + detail::fmt4(d) + ".ngc";
+    result.file_name = "polygon-hole-N" + std::to_string(N) + "-d" +
+                       program::format_fixed(d, detail::kPlainDecimals) + ".ngc";
     return result;
   }
   const program::ProgramOptions& options = *params.program;
@@ -178,7 +180,7 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
       params.machine);
   if (options.dialect == program::Dialect::fanuc &&
       params.synchronization == Synchronization::feed_per_rev &&
-      std::fabs(std::floor(params.spindle_speed_rpm + 0.5) - params.spindle_speed_rpm) > 1e-9) {
+      program::fanuc_s_rounds(params.spindle_speed_rpm)) {
     warnings.push_back({program::WarningCode::spindle_speed_rounded,
                         "a Fanuc S word takes no decimals: the spindle speed is printed rounded "
                         "half up (the feed per revolution is exact)"});
@@ -186,7 +188,8 @@ Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params)
   if (*result.printed_path_deviation_mm > params.tolerance_mm) {
     warnings.push_back(
         {program::WarningCode::rounding_exceeds_tolerance,
-         "the program as printed deviates " + detail::fmt4(*result.printed_path_deviation_mm) +
+         "the program as printed deviates " +
+             program::format_fixed(*result.printed_path_deviation_mm, detail::kPlainDecimals) +
              " mm from the exact path, more than tolerance_mm: print more decimals"});
   }
   warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());

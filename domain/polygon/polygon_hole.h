@@ -20,8 +20,7 @@ struct PolygonProgram;
 struct OvercutPrediction;
 }  // namespace detail
 
-inline constexpr int kMaxBiarcsPerEllipseArc = 1000;      // P21: else tolerance_unreachable
-inline constexpr double kMaxProgramArcBlocks = 200000.0;  // section 10: else program_too_large
+inline constexpr int kMaxBiarcsPerEllipseArc = 1000;  // P21: else tolerance_unreachable
 
 enum class Synchronization {
   feed_per_rev,  // G95, F = feed per spindle revolution (the paper's way); phase not locked
@@ -101,7 +100,7 @@ struct PolygonHoleResult {
 };
 
 // P1-P34. Errors: tolerance_unreachable (m > 1000 biarcs needed), program_too_large (more than
-// 200 000 arc blocks), not_converged (a numerical procedure failed: a bug).
+// program::kMaxProgramBlocks arc blocks), not_converged (a numerical procedure failed: a bug).
 Result<PolygonHoleResult> generate_polygon_hole(const PolygonHoleParams& params);
 
 // P26: the largest overcut predicted for the programmed motion, mm (about 7 ms for the largest

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "domain/program/block_list_writer.h"
+#include "domain/program/block_words.h"
 
 namespace cutcalc::domain::program {
 namespace {
@@ -21,57 +22,31 @@ std::string cat(std::initializer_list<std::string_view> parts) {
   return out;
 }
 
-// Section 3's text of a model, written as it is read: the header, the blocks from the next one on
-// (the last printed F carried from block to block), the end.
-class ProgramWriter final : public BlockListWriter {
+// The words of a milling program's blocks (section 3), appended to the text of the block.
+class MillingWords final : public BlockWords {
  public:
-  ProgramWriter(std::shared_ptr<const ProgramModel> model, ProgramOptions options)
-      : model_(std::move(model)),
-        options_(std::move(options)),
-        decimals_(decimals_of(options_)),
-        words_(words_of(options_.dialect)) {}
+  explicit MillingWords(ProgramOptions options) : BlockWords(std::move(options)) {}
 
-  [[nodiscard]] std::size_t held_bytes() const override {
-    return sizeof(*this) + options_.name.capacity() + last_feed_.capacity() +
-           program::held_bytes(*model_);
+  void block(const Block& block, std::string& text) {
+    text_ = &text;
+    std::visit([this](const auto& b) { this->block(b); }, block);
   }
 
  private:
-  void write_header(std::string& text) override {
-    text += program_header(model_->comments, options_);
-  }
-  [[nodiscard]] std::size_t block_count() const override { return model_->blocks.size(); }
-  void write_block(std::size_t index, std::string& text) override {
-    text_ = &text;
-    std::visit([this](const auto& b) { this->block(b); }, model_->blocks[index]);
-  }
-  void write_end(std::string& text) override { text += program_end(options_); }
+  using BlockWords::block;
 
-  void line(std::string_view text) {
-    text_->append(text);
-    text_->push_back('\n');
-  }
-  std::string number(double mm) const {
-    return format_fixed(to_program_units(mm, options_.units), decimals_);
-  }
   std::string axes(const Axes& to) const {
     std::string out;
-    if (to.x_mm) out.append(" X").append(number(*to.x_mm));
-    if (to.y_mm) out.append(" Y").append(number(*to.y_mm));
-    if (to.z_mm) out.append(" Z").append(number(*to.z_mm));
+    if (to.x_mm) out.append(" X").append(length(*to.x_mm));
+    if (to.y_mm) out.append(" Y").append(length(*to.y_mm));
+    if (to.z_mm) out.append(" Z").append(length(*to.z_mm));
     return out;
   }
 
   void block(const SafeStart& start) { *text_ += safe_start_text(start, options_); }
   void block(const Rapid& rapid) { line(cat({words_.rapid, axes(rapid.to)})); }
   void block(const Feed& feed) {
-    std::string text = cat({words_.feed, axes(feed.to)});
-    const std::string f = number(feed.feed_mm_per_min);
-    if (f != last_feed_) {
-      text.append(" F").append(f);
-      last_feed_ = f;
-    }
-    line(text);
+    feed_line(cat({words_.feed, axes(feed.to)}), length(feed.feed_mm_per_min));
   }
   void block(const SpindleOn& on) {
     line(cat({"S", spindle_text(on.rpm, options_.dialect, decimals_), " ", words_.spindle_on}));
@@ -79,18 +54,31 @@ class ProgramWriter final : public BlockListWriter {
   void block(const SpeedChange& change) {
     line(cat({"S", spindle_text(change.rpm, options_.dialect, decimals_)}));
   }
-  void block(const SpindleOff&) { line(words_.spindle_off); }
-  void block(const CoolantOn& on) {
-    line(on.coolant == Coolant::mist ? words_.mist : words_.flood);
+};
+
+// Section 3's text of a model, written as it is read: the header, the blocks from the next one on
+// (the last printed F carried from block to block), the end.
+class ProgramWriter final : public BlockListWriter {
+ public:
+  ProgramWriter(std::shared_ptr<const ProgramModel> model, ProgramOptions options)
+      : model_(std::move(model)), words_(std::move(options)) {}
+
+  [[nodiscard]] std::size_t held_bytes() const override {
+    return sizeof(*this) + words_.held_bytes() + program::held_bytes(*model_);
   }
-  void block(const CoolantOff&) { line(words_.coolant_off); }
+
+ private:
+  void write_header(std::string& text) override {
+    text += program_header(model_->comments, words_.options());
+  }
+  [[nodiscard]] std::size_t block_count() const override { return model_->blocks.size(); }
+  void write_block(std::size_t index, std::string& text) override {
+    words_.block(model_->blocks[index], text);
+  }
+  void write_end(std::string& text) override { text += program_end(words_.options()); }
 
   std::shared_ptr<const ProgramModel> model_;
-  ProgramOptions options_;
-  int decimals_;
-  const DialectWords& words_;
-  std::string last_feed_;        // printed; empty before the first feed move
-  std::string* text_ = nullptr;  // the text write_block appends to
+  MillingWords words_;
 };
 
 }  // namespace
@@ -115,8 +103,12 @@ double to_program_units(double mm, Units units) {
   return units == Units::inch ? mm / kMmPerInch : mm;
 }
 
+double fanuc_s_value(double value) { return std::floor(value + 0.5); }
+
+bool fanuc_s_rounds(double value) { return std::fabs(fanuc_s_value(value) - value) > 1e-9; }
+
 std::string spindle_text(double rpm, Dialect dialect, int decimals) {
-  if (dialect == Dialect::fanuc) return format_fixed(std::floor(rpm + 0.5), 0);
+  if (dialect == Dialect::fanuc) return format_fixed(fanuc_s_value(rpm), 0);
   return format_fixed(rpm, decimals);
 }
 

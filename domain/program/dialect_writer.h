@@ -54,7 +54,12 @@ bool prints_as_zero(std::string_view printed);
 // A length or feed in the program's units (mm, or inch: / 25.4).
 double to_program_units(double mm, Units units);
 
-// The S word's number: fanuc an integer (round half up), the others with `decimals`.
+// A Fanuc S word takes no decimals (programs.md section 1.2): the value rounded half up.
+double fanuc_s_value(double value);
+// Whether the Fanuc S word changes `value` by more than 1e-9 (the warning spindle_speed_rounded).
+bool fanuc_s_rounds(double value);
+
+// The S word's number: fanuc an integer (fanuc_s_value), the others with `decimals`.
 std::string spindle_text(double rpm, Dialect dialect, int decimals);
 
 // Section 3: the program text of `model`, LF line ends, written as it is read (block by block).

@@ -8,6 +8,7 @@
 
 #include "domain/common/interruption.h"
 #include "domain/program/block_list_writer.h"
+#include "domain/program/block_words.h"
 #include "domain/program/dialect_writer.h"
 #include "domain/program/lathe_dialect.h"
 
@@ -16,10 +17,9 @@ namespace {
 
 // The words of a lathe program's parts. With no text to write to (`text_` null), a block only
 // prints the words that must not print as zero: the check before the first byte is written.
-class LatheWords {
+class LatheWords final : public BlockWords {
  public:
-  explicit LatheWords(const ProgramOptions& options)
-      : options_(options), decimals_(decimals_of(options)), words_(words_of(options.dialect)) {}
+  explicit LatheWords(ProgramOptions options) : BlockWords(std::move(options)) {}
 
   // The start and name line(s), the comments, the modal lines, the work offset, the tool call.
   void header(const LatheProgram& program, std::string& text) {
@@ -45,20 +45,14 @@ class LatheWords {
 
   // The first word that printed as zero, or null.
   [[nodiscard]] const char* zero_word() const { return zero_word_; }
-  [[nodiscard]] std::size_t held_bytes() const { return last_feed_.capacity(); }
 
  private:
-  void line(std::string_view text) {
-    text_->append(text);
-    text_->push_back('\n');
-  }
+  using BlockWords::block;
+
   // A word's number, remembering the word when it prints as zero.
   std::string checked(const char* word, std::string printed) {
     if (prints_as_zero(printed) && zero_word_ == nullptr) zero_word_ = word;
     return printed;
-  }
-  std::string length(double mm) const {
-    return format_fixed(to_program_units(mm, options_.units), decimals_);
   }
   std::string point(const LathePoint& to) const {
     std::string out;
@@ -75,17 +69,12 @@ class LatheWords {
   void block(const LatheFeed& feed) {
     const std::string f = checked("F", length(feed.feed_mm));
     if (text_ == nullptr) return;
-    std::string text = std::string(words_.feed) + point(feed.to);
-    if (f != last_feed_) {
-      text.append(" F").append(f);
-      last_feed_ = f;
-    }
-    line(text);
+    feed_line(std::string(words_.feed) + point(feed.to), f);
   }
   void block(const FeedModeChange& change) {
     if (text_ == nullptr) return;
     line(change.mode == FeedMode::inverse_time ? "G93" : "G94");
-    last_feed_.clear();
+    forget_feed();
   }
   void block(const InverseTimeFeed& feed) {
     const std::string f = checked("F", format_fixed(feed.per_minute, decimals_));
@@ -133,21 +122,6 @@ class LatheWords {
     if (text_ == nullptr) return;
     line(std::string(lathe_facts(options_.dialect).dwell_word) + seconds);
   }
-  void block(const SpindleOff&) {
-    if (text_ != nullptr) line(words_.spindle_off);
-  }
-  void block(const CoolantOn& on) {
-    if (text_ != nullptr) line(on.coolant == Coolant::mist ? words_.mist : words_.flood);
-  }
-  void block(const CoolantOff&) {
-    if (text_ != nullptr) line(words_.coolant_off);
-  }
-
-  const ProgramOptions& options_;
-  int decimals_;
-  const DialectWords& words_;
-  std::string* text_ = nullptr;  // where the lines go; null: words checked only
-  std::string last_feed_;        // printed; empty before the first feed move
   const char* zero_word_ = nullptr;
 };
 
@@ -156,11 +130,10 @@ class LatheWords {
 class LatheProgramWriter final : public BlockListWriter {
  public:
   LatheProgramWriter(std::shared_ptr<const LatheProgram> program, ProgramOptions options)
-      : program_(std::move(program)), options_(std::move(options)), words_(options_) {}
+      : program_(std::move(program)), words_(std::move(options)) {}
 
   [[nodiscard]] std::size_t held_bytes() const override {
-    return sizeof(*this) + options_.name.capacity() + words_.held_bytes() +
-           program::held_bytes(*program_);
+    return sizeof(*this) + words_.held_bytes() + program::held_bytes(*program_);
   }
 
  private:
@@ -169,11 +142,10 @@ class LatheProgramWriter final : public BlockListWriter {
   void write_block(std::size_t index, std::string& text) override {
     words_.block(program_->blocks[index], &text);
   }
-  void write_end(std::string& text) override { text += program_end(options_); }
+  void write_end(std::string& text) override { text += program_end(words_.options()); }
 
   std::shared_ptr<const LatheProgram> program_;
-  ProgramOptions options_;
-  LatheWords words_;  // refers to options_
+  LatheWords words_;
 };
 
 }  // namespace
@@ -184,18 +156,17 @@ double surface_speed_in_program_units(double cutting_speed_m_per_min, Units unit
 
 FanucSpindleWords fanuc_spindle_words(const ConstantSpindleSpeed& spindle) {
   FanucSpindleWords words;
-  words.s = std::floor(spindle.rpm + 0.5);
-  words.rounded = std::fabs(words.s - spindle.rpm) > 1e-9;
+  words.s = fanuc_s_value(spindle.rpm);
+  words.rounded = fanuc_s_rounds(spindle.rpm);
   return words;
 }
 
 FanucSpindleWords fanuc_spindle_words(const ConstantSurfaceSpeed& spindle, Units units) {
   const double v = surface_speed_in_program_units(spindle.cutting_speed_m_per_min, units);
   FanucSpindleWords words;
-  words.s = std::floor(v + 0.5);
+  words.s = fanuc_s_value(v);
   words.clamp_rpm = std::floor(spindle.max_rpm);  // never above the limit
-  words.rounded =
-      std::fabs(words.s - v) > 1e-9 || std::fabs(*words.clamp_rpm - spindle.max_rpm) > 1e-9;
+  words.rounded = fanuc_s_rounds(v) || std::fabs(*words.clamp_rpm - spindle.max_rpm) > 1e-9;
   return words;
 }
 
@@ -226,6 +197,22 @@ Result<std::string> write_lathe_program(const LatheProgram& program,
                                                     &program);
   std::string text;
   write_all(*open_lathe_program(unowned, options), text);
+  return text;
+}
+
+Result<LatheProgramFile> lathe_program_file(LatheProgram program, const ProgramOptions& options) {
+  if (auto error = lathe_program_error(program, options)) return std::move(*error);
+  return LatheProgramFile{std::make_shared<const LatheProgram>(std::move(program)), options,
+                          file_name(options)};
+}
+
+std::unique_ptr<TextSource> open_program_text(const LatheProgramFile& file) {
+  return open_lathe_program(file.program, file.options);
+}
+
+std::string program_text(const LatheProgramFile& file) {
+  std::string text;
+  write_all(*open_program_text(file), text);
   return text;
 }
 

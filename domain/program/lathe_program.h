@@ -95,6 +95,21 @@ Result<std::string> write_lathe_program(const LatheProgram& program, const Progr
 // What `program` holds, in bytes (for a memory budget).
 std::size_t held_bytes(const LatheProgram& program);
 
+// A checked lathe program as it is sent: the grooving cycle's and the lathe flat's.
+struct LatheProgramFile {
+  // The program, LF line ends: its text is written as it is read (open_program_text).
+  std::shared_ptr<const LatheProgram> program;
+  ProgramOptions options;  // what the text is written with
+  std::string file_name;
+};
+
+// `program` checked (lathe_program_error), then held with its options and file name.
+Result<LatheProgramFile> lathe_program_file(LatheProgram program, const ProgramOptions& options);
+// The program's text, written as it is read.
+std::unique_ptr<TextSource> open_program_text(const LatheProgramFile& file);
+// The whole text of open_program_text.
+std::string program_text(const LatheProgramFile& file);
+
 // The Fanuc S words of a spindle block: integers (v and n round half up; n_max floors, never above
 // the limit); the values in the program's units (G96 in ft/min under G20).
 struct FanucSpindleWords {

@@ -143,7 +143,7 @@ Result<PassProgram> write_pass_program(const entry::MainTimeParams& params,
   out.warnings = limit_warnings(setup_top_spindle_rpm(main_time), feeds, limits);
   if (options.dialect == Dialect::fanuc) {
     for (const double rpm : speeds) {
-      if (std::fabs(std::floor(rpm + 0.5) - rpm) > 1e-9) {
+      if (fanuc_s_rounds(rpm)) {
         out.warnings.push_back(
             {WarningCode::spindle_speed_rounded,
              "a Fanuc S word takes no decimals: S" + spindle_text(rpm, options.dialect, decimals) +

@@ -12,11 +12,9 @@
 #include "domain/entry/main_time.h"
 #include "domain/program/program_model.h"
 #include "domain/program/program_options.h"
+#include "domain/program/program_size.h"
 
 namespace cutcalc::domain::program {
-
-// The size cap of section 1.2 (as the polygon's): at most this many blocks.
-inline constexpr double kMaxProgramBlocks = 200000;
 
 struct PassProgram {
   // The program, LF line ends: its text is written as it is read (open_program_text).

@@ -102,15 +102,19 @@ TEST(GcodeText, TextRulesForEveryNAndMode) {
 }
 
 TEST(GcodeText, NumberFormat) {
-  EXPECT_EQ(polygon_detail::fmt4(-0.00004), "0.0000");
-  EXPECT_EQ(polygon_detail::fmt4(-0.0), "0.0000");
-  EXPECT_EQ(polygon_detail::fmt4(-0.00005001), "-0.0001");
-  EXPECT_EQ(polygon_detail::fmt4(300.0), "300.0000");
-  EXPECT_EQ(polygon_detail::fmt4(-0.27094), "-0.2709");
-  EXPECT_EQ(polygon_detail::fmt4(1.23760430703), "1.2376");
-  EXPECT_EQ(polygon_detail::fmt4(24.02466280517), "24.0247");
+  const auto plain = [](double value) {
+    return cutcalc::domain::program::format_fixed(value, polygon_detail::kPlainDecimals);
+  };
+  EXPECT_EQ(plain(-0.00004), "0.0000");
+  EXPECT_EQ(plain(-0.0), "0.0000");
+  EXPECT_EQ(plain(-0.00005001), "-0.0001");
+  EXPECT_EQ(plain(300.0), "300.0000");
+  EXPECT_EQ(plain(-0.27094), "-0.2709");
+  EXPECT_EQ(plain(1.23760430703), "1.2376");
+  EXPECT_EQ(plain(24.02466280517), "24.0247");
   for (const double x : {0.00005, 0.00015, 2.5e-5, 1.99995, -7.77775, 123456.78905}) {
-    EXPECT_EQ(polygon_detail::fmt4(x), four_decimals(x)) << x;  // the same rounding as printf
+    EXPECT_EQ(plain(x),
+              four_decimals(x)) << x;  // the same rounding as printf
   }
 }
 
