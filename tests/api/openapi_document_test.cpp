@@ -11,12 +11,17 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "api/grooving/grooving_cycle_endpoint.h"
+#include "api/lathe_flat/lathe_flat_endpoint.h"
+#include "support/endpoint_probe.h"
 #include "support/project_contract.h"
+#include "support/route_paths.h"
 
 #ifndef CUTCALC_OPENAPI_PATH
 #error "CUTCALC_OPENAPI_PATH (path to openapi.yaml, a string literal) must be defined"
@@ -26,6 +31,7 @@ namespace {
 
 using cutcalc::test_support::OpenApiContract;
 using cutcalc::test_support::project_contract;
+using cutcalc::testing::EndpointProbe;
 using nlohmann::json;
 
 const json& doc() {
@@ -1220,6 +1226,236 @@ TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
     EXPECT_TRUE(response["content"].contains(pj)) << status;
     EXPECT_EQ(response["content"].size(), 1U) << status;
   }
+}
+
+// The lathe programs (/v1/lathe-flat, /v1/grooving/cycle) checked with their real answers: each
+// endpoint's handler, the pipeline HTTP answers with (support/endpoint_probe.h).
+
+// lathe-flat.md section 9: D32, t = 1, point tool, N = 10, f = 100 mm/min.
+json lathe_flat_request() {
+  return json::parse(
+      R"({"part_diameter_mm": 32, "flat_depth_mm": 1, "steps": 10, "feed_mm_per_min": 100})");
+}
+
+// grooving-cycle.md section 7's worked example (reference case gc-paper-S0.12-css).
+json grooving_cycle_request() {
+  return json::parse(R"({"groove_width_mm": 10.4, "start_diameter_mm": 220, "groove_depth_mm": 4.8,
+    "groove_left_z_mm": -20, "shift_mm": 0.4, "cutting_speed_m_per_min": 86,
+    "max_spindle_rpm": 1000, "nose_radius_mm": 0.3, "minor_edge_angle_deg": 2,
+    "feed_per_rev_mm": 0.12})");
+}
+
+const EndpointProbe kLatheFlat{cutcalc::testing::kLatheFlatPath,
+                               &cutcalc::api::lathe_flat::handle_lathe_flat};
+const EndpointProbe kGroovingCycle{cutcalc::testing::kGroovingCyclePath,
+                                   &cutcalc::api::grooving::handle_grooving_cycle};
+
+// An answer's headers as the service sends them (it adds X-Request-Id to every answer).
+std::map<std::string, std::string> headers_of(const cutcalc::api::ApiResponse& response) {
+  std::map<std::string, std::string> headers{{"X-Request-Id", "abc-1"}};
+  for (const auto& [name, value] : response.headers) {
+    headers[name] = value;
+  }
+  return headers;
+}
+
+// The real answers to `request` in each of `dialects` and both units, JSON and text/plain (the
+// program alone, exactly the media type sent, as a download), satisfy the contract.
+void expect_real_answers_conform(const std::string& path, const EndpointProbe& endpoint,
+                                 const json& request, const std::vector<std::string>& dialects) {
+  for (const std::string& dialect : dialects) {
+    for (const char* units : {"mm", "inch"}) {
+      SCOPED_TRACE(path + " " + dialect + " " + units);
+      json asked = request;
+      asked["program"] = {{"dialect", dialect}, {"units", units}, {"name", "PART_7"}};
+      const cutcalc::api::ApiResponse answer = endpoint.answer(asked);
+      ASSERT_EQ(answer.status, 200) << answer.body;
+      const json body = cutcalc::testing::parsed(answer);
+      auto v = project_contract().check_response("POST", path, 200, answer.content_type, body);
+      EXPECT_TRUE(v.empty()) << join(v);
+      v = project_contract().check_response_headers("POST", path, 200, headers_of(answer));
+      EXPECT_TRUE(v.empty()) << join(v);
+
+      const cutcalc::api::ApiResponse text = endpoint.answer(asked, "text/plain");
+      ASSERT_EQ(text.status, 200) << text.body;
+      EXPECT_EQ(text.content_type, "text/plain; charset=us-ascii");
+      EXPECT_EQ(text.body, body.at("program").get<std::string>());
+      v = project_contract().check_response("POST", path, 200, text.content_type, text.body);
+      EXPECT_TRUE(v.empty()) << join(v);
+      const auto headers = headers_of(text);
+      EXPECT_EQ(headers.count("Content-Disposition"), 1U);
+      v = project_contract().check_response_headers("POST", path, 200, headers);
+      EXPECT_TRUE(v.empty()) << join(v);
+    }
+  }
+}
+
+// What a lathe program answer's schema refuses, shown on real answers: `good` (without optional
+// members) and `warned` (with a warning). Every member of `good` is required, none may be added,
+// the dialect, units, decimals, file name and program are pinned, each warning has a documented
+// code and a detail; the text/plain form is exactly the program under its exact media type.
+void expect_lathe_answer_is_strict(const std::string& path, const json& good, const json& warned) {
+  const std::string aj = "application/json";
+  ASSERT_TRUE(project_contract().check_response("POST", path, 200, aj, good).empty())
+      << join(project_contract().check_response("POST", path, 200, aj, good));
+  for (const auto& [key, unused] : good.items()) {
+    json missing = good;
+    missing.erase(key);
+    EXPECT_TRUE(
+        names_pointer(project_contract().check_response("POST", path, 200, aj, missing), "/" + key))
+        << key << " must be required";
+  }
+  json extra = good;
+  extra["side_mm"] = 16.0;
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_response("POST", path, 200, aj, extra), "/side_mm"));
+  for (const auto& [key, bad] : std::vector<std::pair<std::string, json>>{
+           {"dialect", "heidenhain"},
+           {"units", "cm"},
+           {"decimals", 2},
+           {"decimals", 7},
+           {"decimals", 4.5},
+           {"file_name", "cutcalc.ngc"},
+           {"file_name", "CUTCALC.nc"},
+           {"program", "G21 G18 G90\nM30\n"},
+           {"program", "%\n(CUTCALC POLYGON HOLE N4 D16.0000 A16.0000)\nM30\n%\n"}}) {
+    json wrong = good;
+    wrong[key] = bad;
+    EXPECT_TRUE(
+        names_pointer(project_contract().check_response("POST", path, 200, aj, wrong), "/" + key))
+        << key << " " << bad.dump();
+  }
+
+  ASSERT_FALSE(warned.at("warnings").empty()) << warned.dump();
+  EXPECT_TRUE(project_contract().check_response("POST", path, 200, aj, warned).empty())
+      << join(project_contract().check_response("POST", path, 200, aj, warned));
+  json bad_code = warned;
+  bad_code["warnings"][0]["code"] = "phase_not_locked";  // the polygon hole's, not a lathe's
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, bad_code),
+                            "/warnings/0/code"));
+  json no_detail = warned;
+  no_detail["warnings"][0].erase("detail");
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, no_detail),
+                            "/warnings/0/detail"));
+
+  const std::string text = "text/plain; charset=us-ascii";
+  const std::string program = good.at("program").get<std::string>();
+  EXPECT_TRUE(project_contract().check_response("POST", path, 200, text, program).empty());
+  EXPECT_TRUE(project_contract()
+                  .check_response("POST", path, 200, "text/plain; charset=US-ASCII", program)
+                  .empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 200, "text/plain", program).empty());
+  EXPECT_FALSE(project_contract()
+                   .check_response("POST", path, 200, "text/plain; charset=utf-8", program)
+                   .empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 200, text, good).empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 200, text, "M30\n").empty());
+  EXPECT_FALSE(project_contract().check_response("POST", path, 200, aj, program).empty());
+
+  // Content-Disposition: optional (absent with JSON), the dialect's file name in capitals.
+  EXPECT_TRUE(project_contract()
+                  .check_response_headers("POST", path, 200, {{"X-Request-Id", "abc"}})
+                  .empty());
+  for (const char* bad : {R"(attachment; filename="cutcalc.ngc")",
+                          R"(inline; filename="CUTCALC.ngc")", R"(attachment; filename="CUTCALC")",
+                          R"(attachment; filename="polygon-hole-N4-d16.0000.ngc")"}) {
+    EXPECT_EQ(project_contract()
+                  .check_response_headers("POST", path, 200,
+                                          {{"X-Request-Id", "abc"}, {"Content-Disposition", bad}})
+                  .size(),
+              1U)
+        << bad;
+  }
+}
+
+// A real refusal (422 problem+json, whatever Accept asked for) conforms; every error status is
+// documented as problem+json alone.
+void expect_real_refusal_conforms(const std::string& path, const EndpointProbe& endpoint,
+                                  const json& bad_request) {
+  const std::string pj = "application/problem+json";
+  for (const char* accept : {"application/json", "text/plain"}) {
+    const cutcalc::api::ApiResponse refusal = endpoint.answer(bad_request, accept);
+    ASSERT_EQ(refusal.status, 422) << refusal.body;
+    EXPECT_EQ(refusal.content_type.rfind(pj, 0), 0U) << refusal.content_type;
+    const auto v = project_contract().check_response("POST", path, 422, refusal.content_type,
+                                                     cutcalc::testing::parsed(refusal));
+    EXPECT_TRUE(v.empty()) << accept << join(v);
+  }
+  for (const int status : {400, 405, 413, 415, 422, 500, 503}) {
+    const json& response = deref(doc()["paths"][path]["post"]["responses"][std::to_string(status)]);
+    EXPECT_TRUE(response["content"].contains(pj)) << status;
+    EXPECT_EQ(response["content"].size(), 1U) << status;
+  }
+}
+
+TEST(OpenApiDocument, LatheFlatAnswersJsonOrThePlainProgram) {
+  const std::string path = cutcalc::testing::kLatheFlatPath;
+  expect_real_answers_conform(path, kLatheFlat, lathe_flat_request(), {"linuxcnc", "sinumerik"});
+
+  const json good = cutcalc::testing::parsed(kLatheFlat.answer(lathe_flat_request()));
+  json warned_request = lathe_flat_request();
+  warned_request["feed_mm_per_min"] = 20000;
+  warned_request["flatness_tolerance_mm"] = 0.002;
+  const json warned = cutcalc::testing::parsed(kLatheFlat.answer(warned_request));
+  expect_lathe_answer_is_strict(path, good, warned);
+
+  // Fanuc is no lathe-flat dialect (no C-axis flats there); a step row has all its members.
+  const std::string aj = "application/json";
+  json fanuc = good;
+  fanuc["dialect"] = "fanuc";
+  fanuc["file_name"] = "O0001.nc";
+  const auto v = project_contract().check_response("POST", path, 200, aj, fanuc);
+  EXPECT_TRUE(names_pointer(v, "/dialect")) << join(v);
+  EXPECT_TRUE(names_pointer(v, "/file_name")) << join(v);
+  json row = good;
+  row["steps_table"][0].erase("chord_mm");
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, row),
+                            "/steps_table/0"));
+  json steps = good;
+  steps["steps"] = 1001;
+  EXPECT_TRUE(
+      names_pointer(project_contract().check_response("POST", path, 200, aj, steps), "/steps"));
+
+  json bad_request = lathe_flat_request();
+  bad_request["part_diameter_mm"] = 0;
+  expect_real_refusal_conforms(path, kLatheFlat, bad_request);
+}
+
+TEST(OpenApiDocument, GroovingCycleAnswersJsonOrThePlainProgram) {
+  const std::string path = cutcalc::testing::kGroovingCyclePath;
+  expect_real_answers_conform(path, kGroovingCycle, grooving_cycle_request(),
+                              {"linuxcnc", "fanuc", "sinumerik"});
+
+  const json good = cutcalc::testing::parsed(kGroovingCycle.answer(grooving_cycle_request()));
+  // Fanuc G97 at 150.5 rpm over a 140 rpm limit, X2 0.6, N = 2 (several warnings).
+  json warned_request = grooving_cycle_request();
+  warned_request.erase("cutting_speed_m_per_min");
+  warned_request["spindle_speed_rpm"] = 150.5;
+  warned_request["max_spindle_rpm"] = 140;
+  warned_request["shift_mm"] = 0.6;
+  warned_request["groove_depth_mm"] = 0.24;
+  warned_request["program"] = {{"dialect", "fanuc"}};
+  const json warned = cutcalc::testing::parsed(kGroovingCycle.answer(warned_request));
+  expect_lathe_answer_is_strict(path, good, warned);
+
+  const std::string aj = "application/json";
+  for (const auto& [key, bad] :
+       std::vector<std::pair<std::string, json>>{{"end_side", "middle"},
+                                                 {"wall_rz_branch", "plunge"},
+                                                 {"revolutions", 0},
+                                                 {"revolutions", 20001},
+                                                 {"shift_revolutions", -1},
+                                                 {"wall_rz_um", -0.1}}) {
+    json wrong = good;
+    wrong[key] = bad;
+    EXPECT_TRUE(
+        names_pointer(project_contract().check_response("POST", path, 200, aj, wrong), "/" + key))
+        << key << " " << bad.dump();
+  }
+
+  json bad_request = grooving_cycle_request();
+  bad_request.erase("nose_radius_mm");
+  expect_real_refusal_conforms(path, kGroovingCycle, bad_request);
 }
 
 #ifdef CUTCALC_REFERENCE_DIR

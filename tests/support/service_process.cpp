@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <regex>
 #include <stdexcept>
@@ -90,7 +91,11 @@ std::string ServiceProcess::output() {
 }
 
 RawConnection::RawConnection(int port) {
-  fd_ = socket(AF_INET, SOCK_STREAM, 0);
+  // Not inherited by a service process started while it is open.
+  fd_ = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd_ < 0) {
+    return;
+  }
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_port = htons(static_cast<std::uint16_t>(port));
@@ -163,6 +168,26 @@ bool RawConnection::read_until_closed(int timeout_ms, std::string& into) {
     const ssize_t n = receive_some(fd_, into, until);
     if (n == 0) return true;
     if (n < 0) return false;
+  }
+}
+
+RawConnection::PeerState RawConnection::peer_state() const {
+  if (fd_ < 0) return PeerState::closed;
+  char byte = 0;
+  const ssize_t n = recv(fd_, &byte, 1, MSG_PEEK | MSG_DONTWAIT);
+  if (n > 0) return PeerState::data;
+  if (n == 0) return PeerState::closed;
+  return errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR ? PeerState::silent
+                                                                   : PeerState::closed;
+}
+
+bool RawConnection::drain_until_closed() {
+  if (fd_ < 0) return true;
+  for (;;) {
+    char buffer[4096];
+    const ssize_t n = recv(fd_, buffer, sizeof buffer, MSG_DONTWAIT);
+    if (n == 0) return true;
+    if (n < 0) return errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR;
   }
 }
 

@@ -33,7 +33,8 @@ class ServiceProcess {
   bool exited_ = false;
 };
 
-// A raw TCP connection to 127.0.0.1:port, for requests sent in pieces.
+// A raw TCP connection to 127.0.0.1:port, for requests sent in pieces and for clients that
+// misbehave (idle, slow, never finishing a request).
 class RawConnection {
  public:
   explicit RawConnection(int port);
@@ -51,6 +52,13 @@ class RawConnection {
   // Reads until the peer closes (true) or `timeout_ms` passes in all (false); appends to `into`.
   bool read_until_closed(int timeout_ms, std::string& into);
   [[nodiscard]] int fd() const { return fd_; }
+
+  // Without blocking or reading: open and silent, closed by the peer (EOF or reset, or never
+  // connected), or bytes waiting.
+  enum class PeerState { silent, closed, data };
+  [[nodiscard]] PeerState peer_state() const;
+  // Without blocking: discards what the peer has sent; true once it has closed (EOF or reset).
+  bool drain_until_closed();
 
  private:
   int fd_ = -1;
