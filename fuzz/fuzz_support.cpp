@@ -50,7 +50,7 @@ bool writes_program(std::string_view path) {
 // writer, and the polygon's with a `program` object).
 std::optional<std::string> bad_written_program(std::string_view program) {
   return program.starts_with("%\n(CUTCALC POLYGON HOLE N") ? bad_program_text(program)
-                                                            : bad_dialect_program_text(program);
+                                                           : bad_dialect_program_text(program);
 }
 
 #ifdef CUTCALC_FUZZ_OPENAPI_PATH

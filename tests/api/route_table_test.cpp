@@ -100,11 +100,11 @@ TEST(RouteTable, EveryPageSectionNamesItsModule) {
 }
 
 TEST(RouteTable, AProgramWriterThatIsNotHeavyIsNamed) {
-  const std::array routes = {api::CalculationRoute{
-      .path = "/v1/grooving/cycle",
-      .handler = nullptr,
-      .forms = api::AnswerForms::json_and_plain_text_program,
-      .reference_files = {"next/grooving-cycle.json"}}};
+  const std::array routes = {
+      api::CalculationRoute{.path = "/v1/grooving/cycle",
+                            .handler = nullptr,
+                            .forms = api::AnswerForms::json_and_plain_text_program,
+                            .reference_files = {"next/grooving-cycle.json"}}};
   const auto problems = test_support::route_table_problems(project_inputs(routes));
   EXPECT_TRUE(mentions(problems, "/v1/grooving/cycle: writes a program but is not heavy"))
       << joined(problems);
