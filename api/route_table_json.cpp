@@ -30,10 +30,12 @@ nlohmann::json calculation_routes_json() {
       }
     }
     row["page_section"] = nullptr;
+    row["page_module"] = nullptr;
     if (route.page_section != kNoPage) {
       row["page_section"] = route.page_section;
+      row["page_module"] = route.page_module;
     }
-    row["heavy"] = can_be_heavy(route);
+    row["heavy"] = route.heavy;
     row["max_body_bytes"] = route.max_body_bytes;  // 0: the service's default
     rows.push_back(std::move(row));
   }

@@ -5,7 +5,8 @@
 //   {"path", "slug", "forms": ["json"] or ["json", "plain_text"],
 //    "plot_field": {"name", "example", "replaces"} or null,
 //    "reference_files": ["entry-length.json", "next/..."], "next_reference_files": ["next/..."],
-//    "page_section": "entry" or null}
+//    "page_section": "entry" or null, "page_module": "sections/entry.js" or null,
+//    "heavy": true or false, "max_body_bytes": 0 (the service's default) or its own limit}
 
 #include <nlohmann/json.hpp>
 

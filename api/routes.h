@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "api/json_endpoint.h"
+#include "api/program/program_reader.h"
 
 namespace cutcalc::api {
 
@@ -35,6 +36,13 @@ struct CalculationRoute {
   const char* path;
   JsonHandler handler;
   AnswerForms forms = AnswerForms::json;
+  // With the text/plain form: what the program it writes holds (its endpoint states it).
+  const program::ProgramPolicy* program = nullptr;
+  // Its work can be heavy, so the service runs it on the calculation pool, off the event loops
+  // that answer the light requests: an endpoint that writes a program does as much work as the
+  // program has blocks (a request field decides: up to megabytes, tens of milliseconds), one that
+  // times a program as much as the program it is sent.
+  bool heavy = false;
   PlotField plot{};
   // Reference case files checking the endpoint, relative to shared/reference: "entry-length.json",
   // or "next/<name>.json" for a file of ../shared/reference/next/ (cases of calculations not built
@@ -42,8 +50,8 @@ struct CalculationRoute {
   // reference/*.json plus the next/ files listed here. Unused slots stay empty.
   std::array<std::string_view, 3> reference_files{};
   std::string_view page_section = kNoPage;  // the id of its <section> in web/index.html
-  // Runs on the calculation pool whatever its answer forms (a program to time: MB of text).
-  bool heavy = false;
+  // The section's module, relative to web/ui: "sections/grooving.js" ("" with kNoPage).
+  std::string_view page_module = "";
   // The largest request body it takes; 0: the service's default (HttpLimits::max_body_bytes).
   std::size_t max_body_bytes = 0;
 };
@@ -52,13 +60,6 @@ struct CalculationRoute {
 inline constexpr std::size_t kProgramBodyBytes = 32 * 1024 * 1024;
 
 std::span<const CalculationRoute> calculation_routes();
-
-// Whether a request's work can be heavy: an endpoint that writes a program does as much work as
-// the program has blocks (a request field decides: up to megabytes, tens of milliseconds), so the
-// service runs it off the event loops that answer the light requests.
-constexpr bool can_be_heavy(const CalculationRoute& route) {
-  return route.heavy || route.forms == AnswerForms::json_and_plain_text_program;
-}
 
 // The route of `path`, or nullptr.
 const CalculationRoute* find_calculation_route(std::string_view path);

@@ -39,6 +39,20 @@ api::JsonHandler handler_for(std::string_view path) {
   std::abort();
 }
 
+// Whether the route's answers carry a program (its row has the text/plain form; the JSON form
+// has it as `program`).
+bool writes_program(std::string_view path) {
+  const api::CalculationRoute* route = api::find_calculation_route(path);
+  return route != nullptr && route->forms == api::AnswerForms::json_and_plain_text_program;
+}
+
+// A program a route wrote: today's polygon program, or a program in a dialect (every other
+// writer, and the polygon's with a `program` object).
+std::optional<std::string> bad_written_program(std::string_view program) {
+  return program.starts_with("%\n(CUTCALC POLYGON HOLE N") ? bad_program_text(program)
+                                                           : bad_dialect_program_text(program);
+}
+
 #ifdef CUTCALC_FUZZ_OPENAPI_PATH
 const test_support::OpenApiContract& contract() {
   static const test_support::OpenApiContract loaded =
@@ -825,11 +839,7 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
     if (!has_attachment) {
       return "the text/plain program has no Content-Disposition: attachment";
     }
-    // Today's polygon program, or a program in a dialect (a pass program, or a polygon program
-    // with a `program` object).
-    const bool todays_polygon = starts_with(response.body, "%\n(CUTCALC POLYGON HOLE N");
-    if (auto why = todays_polygon ? bad_program_text(response.body)
-                                  : bad_dialect_program_text(response.body)) {
+    if (auto why = bad_written_program(response.body)) {
       return why;
     }
 #ifdef CUTCALC_FUZZ_OPENAPI_PATH
@@ -861,10 +871,8 @@ std::optional<std::string> broken_promise(std::string_view path, std::string_vie
     if (auto why = problem_shape(body, status)) {
       return why;
     }
-  } else if ((path == "/v1/main-time/program" || path == "/v1/grooving/cycle" ||
-              path == "/v1/lathe-flat") &&
-             body.contains("program") && body["program"].is_string()) {
-    if (auto why = bad_dialect_program_text(body["program"].get<std::string>())) {
+  } else if (writes_program(path) && body.contains("program") && body["program"].is_string()) {
+    if (auto why = bad_written_program(body["program"].get<std::string>())) {
       return "the JSON answer's program: " + *why;
     }
   }

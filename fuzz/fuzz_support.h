@@ -19,7 +19,7 @@ namespace cutcalc::fuzz {
 // Which form of the answer the request asks for (the Accept header).
 enum class Form {
   json,        // Accept: application/json
-  plain_text,  // Accept: text/plain (only the polygon-hole endpoint has a text form)
+  plain_text,  // Accept: text/plain (a route whose row has the text form: a program)
 };
 
 // Runs one fuzz input as the body of a POST to `path` and checks the answer; returns 0.
@@ -57,10 +57,10 @@ std::optional<std::string> negative_length(const nlohmann::json& body);
 // comment is closed on its line and no word outside comments is written as nan or inf.
 std::optional<std::string> bad_program_text(std::string_view program);
 
-// What is wrong with a pass program (POST /v1/main-time/program) or a lathe program (POST
-// /v1/grooving/cycle, POST /v1/lathe-flat) in any dialect, against the text rules of spec
-// programs.md section 3, grooving-cycle.md section 5.2 and lathe-flat.md section 6.2; nullopt
-// when nothing is.
+// What is wrong with a program in a dialect (a mill or a lathe program: every route whose row
+// has the text/plain form writes one, the polygon with a `program` object), against the text
+// rules of spec programs.md section 3, grooving-cycle.md section 5.2 and lathe-flat.md section
+// 6.2; nullopt when nothing is.
 std::optional<std::string> bad_dialect_program_text(std::string_view program);
 
 }  // namespace cutcalc::fuzz

@@ -5,7 +5,8 @@
 # table lists, each case's `request`), and runs every harness for a bounded time. The request
 # harnesses are one per (route, answer form) of the route table (api/routes.cpp): the one binary
 # endpoint_fuzzer, run once per row of harnesses.txt (written by cutcalc_fuzz_seeds) with
-# CUTCALC_FUZZ_ROUTE and CUTCALC_FUZZ_FORM set, under the names <slug>_fuzzer and <slug>_text_fuzzer. Fails on any crash, sanitizer report, timeout (> CUTCALC_FUZZ_TIMEOUT s for one
+# CUTCALC_FUZZ_ROUTE and CUTCALC_FUZZ_FORM set, under the names <slug>_fuzzer and <slug>_text_fuzzer.
+# Fails on any crash, sanitizer report, timeout (> CUTCALC_FUZZ_TIMEOUT s for one
 # input), leak, out-of-memory or broken API promise (fuzz/fuzz_support.h: status 500 or
 # undocumented, body not JSON, NaN or infinity, a negative length, a response or accepted request
 # outside openapi.yaml, a malformed G-code program). Findings are kept in build/fuzz/run/artifacts.
@@ -20,12 +21,12 @@
 # answers are well-framed HTTP/1.1, never more than the requests, problem+json for errors, and
 # that a fresh connection is still served). Its dictionary is fuzz/http.dict.
 #
-# Time: one request harness per route and answer form (13 today) and the G-code reader harness x
-# CUTCALC_FUZZ_SECONDS (default 30) + the engine harness for CUTCALC_FUZZ_ENGINE_SECONDS (default
-# 90) = 8.5 minutes of fuzzing, run
-# CUTCALC_FUZZ_LANES harnesses at a time (default: one per CPU; a libFuzzer process uses one), so
-# about 4 minutes on two cores, plus the build (about 6 minutes from scratch on two idle cores;
-# incremental afterwards).
+# Time: one request harness per route and answer form (the rows of harnesses.txt) and the G-code
+# reader harness x CUTCALC_FUZZ_SECONDS (default 30) + the engine harness for
+# CUTCALC_FUZZ_ENGINE_SECONDS (default 90), run CUTCALC_FUZZ_LANES harnesses at a time (default:
+# one per CPU; a libFuzzer process uses one): about (harnesses x 30 s + 60 s) / lanes, a few
+# minutes on two cores (the run prints how many harnesses the table gave), plus the build (about 6
+# minutes from scratch on two idle cores; incremental afterwards).
 #
 # Environment:
 #   CUTCALC_FUZZ_SECONDS    seconds per request harness (default 30)

@@ -357,7 +357,7 @@ HttpResponse HttpApp::finish(const Exchange& exchange, HttpResponse res) {
 
 void HttpApp::install_routes() {
   for (const api::CalculationRoute& route : api::calculation_routes()) {
-    routes_.add_calculation(route.path, route.handler, api::can_be_heavy(route));
+    routes_.add_calculation(route.path, route.handler, route.heavy);
   }
 
   routes_.add_get("/healthz", [](const HttpRequest&, HttpResponse& res) {

@@ -1,13 +1,12 @@
 #include "api/entry/entry_json.h"
 
+#include "api/json_fields.h"
+
 namespace cutcalc::api::entry {
 
 nlohmann::json to_json(const domain::entry::Position& position) {
-  // Member by member: a brace list would build each member through a temporary two-element
-  // array, a cost paid on every answer of this hot endpoint.
   nlohmann::json position_json = nlohmann::json::object();
-  position_json["x_mm"] = position.x_mm;
-  position_json["y_mm"] = position.y_mm;
+  CUTCALC_JSON_FIELDS(position_json, position, x_mm, y_mm);
   return position_json;
 }
 
@@ -105,18 +104,11 @@ namespace {
 
 nlohmann::json to_json(const domain::entry::LateralPass& pass) {
   nlohmann::json out = nlohmann::json::object();
-  out["width_mm"] = pass.width_mm;
-  out["axis_y_mm"] = pass.axis_y_mm;
-  out["offset_mm"] = pass.offset_mm;
-  out["strip_width_mm"] = pass.strip_width_mm;
-  out["engagement_length_mm"] = pass.engagement_length_mm;
-  out["entry_length_mm"] = pass.entry_length_mm;
+  CUTCALC_JSON_FIELDS(out, pass, width_mm, axis_y_mm, offset_mm, strip_width_mm,
+                      engagement_length_mm, entry_length_mm, working_stroke_mm, entry_time_min,
+                      steady_time_min, time_min);
   out["start"] = entry::to_json(pass.start);
   out["end"] = entry::to_json(pass.end);
-  out["working_stroke_mm"] = pass.working_stroke_mm;
-  out["entry_time_min"] = pass.entry_time_min;
-  out["steady_time_min"] = pass.steady_time_min;
-  out["time_min"] = pass.time_min;
   return out;
 }
 
@@ -128,15 +120,9 @@ nlohmann::json to_json(const domain::entry::FinishLevel& finish) {
                       {"time_min", times.time_min}});
   }
   nlohmann::json out = nlohmann::json::object();
-  out["depth_mm"] = finish.depth_mm;
-  out["spindle_speed_rpm"] = finish.spindle_speed_rpm;
-  out["feed_per_rev_mm"] = finish.feed_per_rev_mm;
-  out["feed_mm_per_min"] = finish.feed_mm_per_min;
-  out["entry_feed_mm_per_min"] = finish.entry_feed_mm_per_min;
+  CUTCALC_JSON_FIELDS(out, finish, depth_mm, spindle_speed_rpm, feed_per_rev_mm, feed_mm_per_min,
+                      entry_feed_mm_per_min, entry_time_min, steady_time_min, time_min);
   out["lateral_passes"] = std::move(passes);
-  out["entry_time_min"] = finish.entry_time_min;
-  out["steady_time_min"] = finish.steady_time_min;
-  out["time_min"] = finish.time_min;
   return out;
 }
 
@@ -148,18 +134,13 @@ nlohmann::json to_json(const domain::entry::MainTimeResult& result) {
     passes.push_back(to_json(pass));
   }
   nlohmann::json out = nlohmann::json::object();
-  out["spindle_speed_rpm"] = result.spindle_speed_rpm;
-  out["feed_per_rev_mm"] = result.feed_per_rev_mm;
-  out["feed_mm_per_min"] = result.feed_mm_per_min;
-  out["entry_feed_mm_per_min"] = result.entry_feed_mm_per_min;
-  out["depth_passes_mm"] = result.depth_passes_mm;
+  CUTCALC_JSON_FIELDS(out, result, spindle_speed_rpm, feed_per_rev_mm, feed_mm_per_min,
+                      entry_feed_mm_per_min, depth_passes_mm, main_time_min, entry_time_min,
+                      steady_time_min);
   out["lateral_passes"] = std::move(passes);
   if (result.finish) {
     out["finish"] = to_json(*result.finish);  // E39-E41, only with a finishing level
   }
-  out["main_time_min"] = result.main_time_min;
-  out["entry_time_min"] = result.entry_time_min;
-  out["steady_time_min"] = result.steady_time_min;
   return out;
 }
 

@@ -4,7 +4,7 @@
 #include "api/entry/entry_error_pointers.h"
 #include "api/entry/main_time_endpoint.h"
 #include "api/entry/main_time_request.h"
-#include "api/machine_time/program_machine_time.h"
+#include "api/program/program_envelope.h"
 #include "api/program/program_reader.h"
 #include "domain/program/pass_program.h"
 
@@ -25,10 +25,7 @@ HandlerOutcome handle_main_time_program(const nlohmann::json& body) {
     return to_problem(written.error(), kEntryErrorPointers);
   }
   const model::PassProgram& program = written.value();
-  nlohmann::json json = {{"file_name", program.file_name},
-                         {"dialect", model::dialect_name(options.dialect)},
-                         {"units", model::units_name(options.units)},
-                         {"passes", program.passes},
+  nlohmann::json json = {{"passes", program.passes},
                          {"main_time_min", main_time.value().main_time_min},
                          {"working_time_min", program.working_time_min},
                          {"plunge_time_min", program.plunge_time_min},
@@ -37,15 +34,10 @@ HandlerOutcome handle_main_time_program(const nlohmann::json& body) {
                          {"not_modelled", program.not_modelled},
                          {"warnings", program::to_json(program.warnings)},
                          {"main_time", main_time_json(main_time.value(), limits)}};
-  JsonWithText answer{std::move(json),
-                      {},
-                      program.file_name,
-                      model::open_program_text(program),
-                      model::open_program_text(program)};
-  if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
-    return std::move(*problem);
-  }
-  return answer;
+  return program::program_answer(
+      std::move(json),
+      {program.file_name, model::open_program_text(program), model::open_program_text(program)},
+      options, kPassProgram, machine);
 }
 
 }  // namespace cutcalc::api::entry

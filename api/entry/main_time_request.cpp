@@ -124,10 +124,10 @@ std::variant<MainTimeRequest, Problem> read_main_time_request(const nlohmann::js
   MainTimeRequest request;
   request.params = read_params(in, with_program, errors);
   if (with_program) {
-    request.program = program::read_program_options(in, program::ProgramKind::pass_program);
+    request.program = program::read_program_options(in, kPassProgram);
   }
   request.machine = program::read_machine(
-      in, with_program ? program::MachineUse::program_mill : program::MachineUse::limits_only);
+      in, with_program ? program::machine_use(kPassProgram) : program::MachineUse::limits_only);
   in.reject_unknown_fields();
   // Listed beside the fields' own errors: errors[] lists every field error.
   for (FieldError& error : alternative_errors(in)) errors.push_back(std::move(error));

@@ -7,6 +7,7 @@
 
 #include "api/problem.h"
 #include "api/program/machine_reader.h"
+#include "api/program/program_reader.h"
 #include "domain/entry/main_time.h"
 #include "domain/program/program_options.h"
 
@@ -17,6 +18,10 @@ struct MainTimeRequest {
   program::MachineRequest machine;          // `machine` (axes: the program endpoint only)
   domain::program::ProgramOptions program;  // `program` (defaults unless with_program)
 };
+
+// The pass program of POST /v1/main-time/program (programs.md section 2): a mill program with
+// every member of `program`; its route row names it.
+inline constexpr program::ProgramPolicy kPassProgram{.motion = program::MotionMembers::passes};
 
 // Every field error (with `program`, and extra_path_mm 0, only when `with_program`), then the
 // alternatives; a problem when anything is wrong.

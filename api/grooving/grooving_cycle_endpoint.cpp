@@ -1,18 +1,23 @@
 #include "api/grooving/grooving_cycle_endpoint.h"
-#include "api/machine_time/program_machine_time.h"
-#include "api/program/machine_reader.h"
 
 #include <utility>
 #include <vector>
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "api/json_fields.h"
+#include "api/program/program_envelope.h"
 #include "api/program/program_reader.h"
 #include "api/roughness/crest_branch_json.h"
 #include "domain/grooving/grooving_cycle.h"
 #include "domain/grooving/grooving_program.h"
 
 namespace cutcalc::api::grooving {
+
+// A lathe program whose cycle places the tool itself (grooving-cycle.md 2 and 5).
+const program::ProgramPolicy kGroovingProgram{.machine = domain::machine_time::MachineKind::lathe,
+                                              .answer_states_decimals = true};
+
 namespace {
 
 namespace model = domain::grooving;
@@ -76,35 +81,15 @@ model::GroovingCycleParams read_params(ObjectReader& in) {
 
 nlohmann::json to_json(const model::GroovingCycleResult& r) {
   nlohmann::json out = nlohmann::json::object();
-  out["tool_width_mm"] = r.tool_width_mm;
-  out["shift_mm"] = r.shift_mm;
-  out["groove_depth_mm"] = r.groove_depth_mm;
-  out["bottom_diameter_mm"] = r.bottom_diameter_mm;
-  out["approach_diameter_mm"] = r.approach_diameter_mm;
-  out["revolutions"] = r.revolutions;
-  out["radial_revolutions"] = r.radial_revolutions;
-  out["shift_revolutions"] = r.shift_revolutions;
-  out["shifts"] = r.shifts;
-  out["infeed_per_revolution_mm"] = r.infeed_per_revolution_mm;
-  out["shift_feed_mm_per_rev"] = r.shift_feed_mm_per_rev;
-  out["final_shift_revolutions"] = r.final_shift_revolutions;
-  out["spindle_revolutions"] = r.spindle_revolutions;
+  CUTCALC_JSON_FIELDS(
+      out, r, tool_width_mm, shift_mm, groove_depth_mm, bottom_diameter_mm, approach_diameter_mm,
+      revolutions, radial_revolutions, shift_revolutions, shifts, infeed_per_revolution_mm,
+      shift_feed_mm_per_rev, final_shift_revolutions, spindle_revolutions, approach_time_min,
+      plunge_time_min, shift_time_min, dwell_time_min, final_shift_time_min, retract_time_min,
+      cycle_time_min, spindle_speed_at_start_rpm, spindle_speed_at_bottom_rpm, chip_thickness_mm,
+      side_chip_thickness_mm, wall_pitch_mm, wall_rz_um, plain_plunge_rz_um);
   out["end_side"] = model::side_name(r.end_side);
-  out["approach_time_min"] = r.approach_time_min;
-  out["plunge_time_min"] = r.plunge_time_min;
-  out["shift_time_min"] = r.shift_time_min;
-  out["dwell_time_min"] = r.dwell_time_min;
-  out["final_shift_time_min"] = r.final_shift_time_min;
-  out["retract_time_min"] = r.retract_time_min;
-  out["cycle_time_min"] = r.cycle_time_min;
-  out["spindle_speed_at_start_rpm"] = r.spindle_speed_at_start_rpm;
-  out["spindle_speed_at_bottom_rpm"] = r.spindle_speed_at_bottom_rpm;
-  out["chip_thickness_mm"] = r.chip_thickness_mm;
-  out["side_chip_thickness_mm"] = r.side_chip_thickness_mm;
-  out["wall_pitch_mm"] = r.wall_pitch_mm;
-  out["wall_rz_um"] = r.wall_rz_um;
   out["wall_rz_branch"] = roughness::to_string(r.wall_rz_branch);
-  out["plain_plunge_rz_um"] = r.plain_plunge_rz_um;
   return out;
 }
 
@@ -115,9 +100,9 @@ HandlerOutcome handle_grooving_cycle(const nlohmann::json& body) {
   ObjectReader in = root_reader(body, errors);
   const model::GroovingCycleParams params = read_params(in);
   const domain::program::ProgramOptions options =
-      program::read_program_options(in, program::ProgramKind::lathe);
+      program::read_program_options(in, kGroovingProgram);
   const program::MachineRequest machine =
-      program::read_machine(in, program::MachineUse::program_lathe);
+      program::read_machine(in, program::machine_use(kGroovingProgram));
   in.reject_unknown_fields();
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
@@ -133,19 +118,10 @@ HandlerOutcome handle_grooving_cycle(const nlohmann::json& body) {
   const model::GroovingProgram& program = written.value();
   nlohmann::json json = to_json(cycle.value());
   json["warnings"] = program::to_json(program.warnings);
-  json["file_name"] = program.file_name;
-  json["dialect"] = domain::program::dialect_name(options.dialect);
-  json["units"] = domain::program::units_name(options.units);
-  json["decimals"] = domain::program::decimals_of(options);
-  JsonWithText answer{std::move(json),
-                      {},
-                      program.file_name,
-                      model::open_program_text(program),
-                      model::open_program_text(program)};
-  if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
-    return std::move(*problem);
-  }
-  return answer;
+  return program::program_answer(
+      std::move(json),
+      {program.file_name, model::open_program_text(program), model::open_program_text(program)},
+      options, kGroovingProgram, machine);
 }
 
 }  // namespace cutcalc::api::grooving

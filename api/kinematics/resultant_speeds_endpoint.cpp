@@ -4,6 +4,7 @@
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "api/json_fields.h"
 #include "api/milling_sense_json.h"
 #include "domain/kinematics/resultant_speeds.h"
 
@@ -53,21 +54,12 @@ model::ResultantSpeedsParams read_params(ObjectReader& in) {
 }
 
 nlohmann::json to_json(const model::ContactPointSpeeds& point) {
-  // Member by member: a brace list would build each member through a temporary two-element
-  // array, a cost paid on every answer of this hot endpoint.
   nlohmann::json out = nlohmann::json::object();
-  out["contact_angle_deg"] = point.contact_angle_deg;
-  out["contact_radius_mm"] = point.contact_radius_mm;
-  out["contact_polar_angle_deg"] = point.contact_polar_angle_deg;
-  out["tool_speed_m_per_min"] = point.tool_speed_m_per_min;
-  out["workpiece_speed_m_per_min"] = point.workpiece_speed_m_per_min;
-  out["resultant_feed_mm_per_min"] = point.resultant_feed_mm_per_min;
-  out["resultant_speed_m_per_min"] = point.resultant_speed_m_per_min;
-  out["resultant_angle_deg"] = point.resultant_angle_deg;
+  CUTCALC_JSON_FIELDS(out, point, contact_angle_deg, contact_radius_mm, contact_polar_angle_deg,
+                      tool_speed_m_per_min, workpiece_speed_m_per_min, resultant_feed_mm_per_min,
+                      resultant_speed_m_per_min, resultant_angle_deg, kinematic_ratio,
+                      normal_speed_m_per_min, along_edge_speed_m_per_min);
   out["sense"] = to_string(point.sense);
-  out["kinematic_ratio"] = point.kinematic_ratio;
-  out["normal_speed_m_per_min"] = point.normal_speed_m_per_min;
-  out["along_edge_speed_m_per_min"] = point.along_edge_speed_m_per_min;
   return out;
 }
 

@@ -1,6 +1,4 @@
 #include "api/lathe_flat/lathe_flat_endpoint.h"
-#include "api/machine_time/program_machine_time.h"
-#include "api/program/machine_reader.h"
 
 #include <array>
 #include <utility>
@@ -8,12 +6,21 @@
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "api/json_fields.h"
+#include "api/program/program_envelope.h"
 #include "api/program/program_reader.h"
 #include "domain/lathe_flat/flat_program.h"
 #include "domain/lathe_flat/flatness.h"
 #include "domain/lathe_flat/lathe_flat.h"
 
 namespace cutcalc::api::lathe_flat {
+
+// Its `program` holds dialect, units, decimals, name and number only (lathe-flat.md 2); no Fanuc
+// form yet (section 6.4).
+const program::ProgramPolicy kLatheFlatProgram{.machine = domain::machine_time::MachineKind::lathe,
+                                               .tool_and_state = false,
+                                               .fanuc = false,
+                                               .answer_states_decimals = true};
 namespace {
 
 namespace model = domain::lathe_flat;
@@ -81,11 +88,7 @@ nlohmann::json to_json(const std::vector<domain::lathe_flat::StepRow>& rows) {
   nlohmann::json table = nlohmann::json::array();
   for (const auto& row : rows) {
     nlohmann::json item = nlohmann::json::object();
-    item["i"] = row.i;
-    item["c_deg"] = row.c_deg;
-    item["x_mm"] = row.x_mm;
-    item["dx_mm"] = row.dx_mm;
-    item["chord_mm"] = row.chord_mm;
+    CUTCALC_JSON_FIELDS(item, row, i, c_deg, x_mm, dx_mm, chord_mm);
     table.push_back(std::move(item));
   }
   return table;
@@ -93,28 +96,13 @@ nlohmann::json to_json(const std::vector<domain::lathe_flat::StepRow>& rows) {
 
 nlohmann::json to_json(const model::LatheFlatResult& r) {
   nlohmann::json out = nlohmann::json::object();
-  out["axis_distance_mm"] = r.axis_distance_mm;
-  out["flat_depth_mm"] = r.flat_depth_mm;
-  out["flat_width_mm"] = r.flat_width_mm;
-  out["face_width_mm"] = r.face_width_mm;
-  out["across_flats_mm"] = r.across_flats_mm;
-  out["engagement_half_angle_deg"] = r.engagement_half_angle_deg;
-  out["sharp_corners"] = r.sharp_corners;
-  out["steps"] = r.steps;
+  CUTCALC_JSON_FIELDS(out, r, axis_distance_mm, flat_depth_mm, flat_width_mm, face_width_mm,
+                      across_flats_mm, engagement_half_angle_deg, sharp_corners, steps, layers,
+                      layer_depths_mm, x_travel_mm, flatness_error_mm, flatness_error_estimate_mm,
+                      cut_blocks, shortest_block_mm, max_feed_by_block_rate_mm_per_min,
+                      cut_time_min, approach_time_min, machining_time_min, clear_x_mm);
   if (r.steps_for_tolerance) out["steps_for_tolerance"] = *r.steps_for_tolerance;
-  out["layers"] = r.layers;
-  out["layer_depths_mm"] = r.layer_depths_mm;
-  out["x_travel_mm"] = r.x_travel_mm;
   out["steps_table"] = to_json(r.steps_table);
-  out["flatness_error_mm"] = r.flatness_error_mm;
-  out["flatness_error_estimate_mm"] = r.flatness_error_estimate_mm;
-  out["cut_blocks"] = r.cut_blocks;
-  out["shortest_block_mm"] = r.shortest_block_mm;
-  out["max_feed_by_block_rate_mm_per_min"] = r.max_feed_by_block_rate_mm_per_min;
-  out["cut_time_min"] = r.cut_time_min;
-  out["approach_time_min"] = r.approach_time_min;
-  out["machining_time_min"] = r.machining_time_min;
-  out["clear_x_mm"] = r.clear_x_mm;
   out["warnings"] = program::to_json(r.warnings);
   return out;
 }
@@ -127,9 +115,9 @@ HandlerOutcome handle_lathe_flat(const nlohmann::json& body) {
   const char* geometry_field = nullptr;
   const model::LatheFlatParams params = read_params(in, errors, geometry_field);
   const domain::program::ProgramOptions options =
-      program::read_program_options(in, program::ProgramKind::lathe_flat);
+      program::read_program_options(in, kLatheFlatProgram);
   const program::MachineRequest machine =
-      program::read_machine(in, program::MachineUse::program_lathe);
+      program::read_machine(in, program::machine_use(kLatheFlatProgram));
   in.reject_unknown_fields();
   if (!errors.empty()) {
     return invalid_input(std::move(errors));
@@ -148,20 +136,11 @@ HandlerOutcome handle_lathe_flat(const nlohmann::json& body) {
   if (!written.ok()) {
     return to_problem(written.error(), pointers);
   }
-  nlohmann::json json = to_json(flat.value());
-  json["file_name"] = written.value().file_name;
-  json["dialect"] = domain::program::dialect_name(options.dialect);
-  json["units"] = domain::program::units_name(options.units);
-  json["decimals"] = domain::program::decimals_of(options);
-  JsonWithText answer{std::move(json),
-                      {},
-                      written.value().file_name,
-                      model::open_program_text(written.value()),
-                      model::open_program_text(written.value())};
-  if (auto problem = machine_time::add_machine_time(answer, machine, options.dialect)) {
-    return std::move(*problem);
-  }
-  return answer;
+  const model::FlatProgram& program = written.value();
+  return program::program_answer(
+      to_json(flat.value()),
+      {program.file_name, model::open_program_text(program), model::open_program_text(program)},
+      options, kLatheFlatProgram, machine);
 }
 
 }  // namespace cutcalc::api::lathe_flat

@@ -3,8 +3,12 @@
 // following: geometry, step table, flatness error, layers, time and the program.
 
 #include "api/json_endpoint.h"
+#include "api/program/program_reader.h"
 
 namespace cutcalc::api::lathe_flat {
+
+// The program it writes (its route row names it).
+extern const program::ProgramPolicy kLatheFlatProgram;
 
 HandlerOutcome handle_lathe_flat(const nlohmann::json& body);
 

@@ -1,17 +1,22 @@
 #include "api/polygon/polygon_hole_endpoint.h"
-#include "api/machine_time/program_machine_time.h"
-#include "api/program/machine_reader.h"
 
 #include <utility>
 #include <vector>
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "api/program/program_envelope.h"
 #include "api/program/program_reader.h"
 #include "domain/polygon/hole_geometry.h"
 #include "domain/polygon/polygon_hole.h"
 
 namespace cutcalc::api::polygon {
+
+// A mill program whose passes are the polygon's own: of the motion members only safe_z_mm, by
+// default the polygon's.
+const program::ProgramPolicy kPolygonProgram{
+    .motion = program::MotionMembers::safe_z,
+    .safe_z_mm = domain::polygon::PolygonHoleParams{}.safe_z_mm};
 namespace {
 
 namespace model = domain::polygon;
@@ -65,7 +70,7 @@ PolygonHoleRequest read_request(const nlohmann::json& body, ObjectReader& in,
   request.params = read_params(in);
   request.include_geometry = in.boolean_or("include_geometry", false);
   if (in.has("program")) {
-    request.params.program = program::read_program_options(in, program::ProgramKind::polygon);
+    request.params.program = program::read_program_options(in, kPolygonProgram);
     const auto& given = body.at("program");
     if (given.is_object() && given.contains("safe_z_mm")) {
       if (in.has("safe_z_mm")) {
@@ -83,7 +88,7 @@ PolygonHoleRequest read_request(const nlohmann::json& body, ObjectReader& in,
       control.tolerance_mm = request.params.tolerance_mm;
     }
   }
-  request.machine = program::read_machine(in, program::MachineUse::program_mill);
+  request.machine = program::read_machine(in, program::machine_use(kPolygonProgram));
   request.params.machine = request.machine.limits;
   in.reject_unknown_fields();
   return request;
@@ -169,8 +174,6 @@ HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
   nlohmann::json json = to_json(result.value());
   const domain::program::ProgramOptions options =
       request.params.program.value_or(domain::program::ProgramOptions{});
-  json["dialect"] = domain::program::dialect_name(options.dialect);
-  json["units"] = domain::program::units_name(options.units);
   if (result.value().printed_path_deviation_mm) {
     json["printed_path_deviation_mm"] = *result.value().printed_path_deviation_mm;
   }
@@ -183,18 +186,13 @@ HandlerOutcome handle_polygon_hole(const nlohmann::json& body) {
     }
     json["geometry"] = to_json(geometry.value());
   }
-  JsonWithText answer{std::move(json),
-                      {},
-                      result.value().file_name,
-                      model::open_program_text(result.value(), true),
-                      model::open_program_text(result.value(), false),
-                      [hole = result.value()](nlohmann::json& members) {
-                        members["predicted_overcut_mm"] = model::predicted_overcut_mm(hole);
-                      }};
-  if (auto problem = machine_time::add_machine_time(answer, request.machine, options.dialect)) {
-    return std::move(*problem);
-  }
-  return answer;
+  return program::program_answer(
+      std::move(json),
+      {result.value().file_name, model::open_program_text(result.value(), false),
+       model::open_program_text(result.value(), true)},
+      options, kPolygonProgram, request.machine, [hole = result.value()](nlohmann::json& members) {
+        members["predicted_overcut_mm"] = model::predicted_overcut_mm(hole);
+      });
 }
 
 }  // namespace cutcalc::api::polygon

@@ -2,8 +2,6 @@
 
 #include <string>
 
-#include "domain/polygon/polygon_hole.h"
-
 namespace cutcalc::api::program {
 namespace {
 
@@ -69,9 +67,9 @@ void read_identity(ObjectReader& in, model::ProgramOptions& options) {
   }
 }
 
-void read_tool_and_machine_state(ObjectReader& in, ProgramKind kind,
+void read_tool_and_machine_state(ObjectReader& in, const ProgramPolicy& policy,
                                  model::ProgramOptions& options) {
-  const bool lathe = kind == ProgramKind::lathe;
+  const bool lathe = policy.machine == domain::machine_time::MachineKind::lathe;
   if (in.has("tool_number")) {
     options.tool_number = static_cast<int>(
         in.required_integer("tool_number", 1, lathe ? model::kMaxTurretTool : model::kMaxToolNumber)
@@ -98,13 +96,11 @@ void read_tool_and_machine_state(ObjectReader& in, ProgramKind kind,
                                         : model::Coolant::off;
 }
 
-void read_motion(ObjectReader& in, ProgramKind kind, model::ProgramOptions& options) {
-  if (kind == ProgramKind::lathe) return;
+void read_motion(ObjectReader& in, const ProgramPolicy& policy, model::ProgramOptions& options) {
+  if (policy.motion == MotionMembers::none) return;
   options.safe_z_mm =
-      in.number_or("safe_z_mm", Bounds::positive(),
-                   kind == ProgramKind::polygon ? domain::polygon::PolygonHoleParams{}.safe_z_mm
-                                                : options.safe_z_mm);
-  if (kind == ProgramKind::polygon) {
+      in.number_or("safe_z_mm", Bounds::positive(), policy.safe_z_mm.value_or(options.safe_z_mm));
+  if (policy.motion == MotionMembers::safe_z) {
     for (const char* key : {"clearance_mm", "plunge_feed_mm_per_min", "rapid_mm_per_min"}) {
       if (in.has(key)) in.reject(key, ErrorCode::pass_program_only);
     }
@@ -142,21 +138,21 @@ void read_path_control(ObjectReader& program, model::ProgramOptions& options) {
 
 }  // namespace
 
-model::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind) {
+model::ProgramOptions read_program_options(ObjectReader& root, const ProgramPolicy& policy) {
   ObjectReader in = root.object("program", false);
   model::ProgramOptions options;
   options.dialect = read_dialect(in);
-  if (kind == ProgramKind::lathe_flat && options.dialect == model::Dialect::fanuc) {
+  if (!policy.fanuc && options.dialect == model::Dialect::fanuc) {
     in.add_error("dialect", ErrorCode::dialect_unsupported,
                  {{"allowed", {"linuxcnc", "sinumerik"}}});
   }
   options.units =
       in.optional_choice("units", {"mm", "inch"}) == "inch" ? model::Units::inch : model::Units::mm;
   read_identity(in, options);
-  if (kind != ProgramKind::lathe_flat) {
-    read_tool_and_machine_state(in, kind, options);
-    read_motion(in, kind, options);
+  if (policy.tool_and_state) {
+    read_tool_and_machine_state(in, policy, options);
   }
+  read_motion(in, policy, options);
   read_path_control(in, options);
   in.reject_unknown_fields();
   return options;

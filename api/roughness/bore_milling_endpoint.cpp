@@ -5,6 +5,7 @@
 
 #include "api/domain_error_mapping.h"
 #include "api/field_reader.h"
+#include "api/json_fields.h"
 #include "api/milling_sense_json.h"
 #include "api/roughness/sample_fields.h"
 #include "domain/roughness/bore_milling.h"
@@ -55,14 +56,9 @@ HandlerOutcome handle_bore_milling(const nlohmann::json& body) {
     return to_problem(result.error(), kErrorPointers);
   }
   const auto& cusp = result.value();
-  // Member by member: a brace list would build each member through a temporary two-element
-  // array, a cost paid on every answer of this hot endpoint.
   nlohmann::json out = nlohmann::json::object();
-  out["cusp_height_um"] = cusp.cusp_height_um;
-  out["approximate_cusp_height_um"] = cusp.approximate_cusp_height_um;
-  out["feed_per_tooth_mm"] = cusp.feed_per_tooth_mm;
-  out["feed_per_tooth_on_bore_mm"] = cusp.feed_per_tooth_on_bore_mm;
-  out["pitch_angle_deg"] = cusp.pitch_angle_deg;
+  CUTCALC_JSON_FIELDS(out, cusp, cusp_height_um, approximate_cusp_height_um, feed_per_tooth_mm,
+                      feed_per_tooth_on_bore_mm, pitch_angle_deg);
   std::optional<double> max_feed_per_rev_mm;
   if (target_cusp_um) {
     const auto max_feed = model::bore_milling_max_feed_mm(params, *target_cusp_um);

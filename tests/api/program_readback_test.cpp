@@ -44,10 +44,6 @@ Dialect dialect_of(std::string_view name) {
   return Dialect::linuxcnc;
 }
 
-bool is_lathe(std::string_view path) {
-  return path == "/v1/grooving/cycle" || path == "/v1/lathe-flat";
-}
-
 // The last value of each of X, Y, Z and C that the program's motion blocks write (every program
 // cutcalc writes is absolute), read from the text with none of the reader's code.
 struct LastWords {
@@ -105,11 +101,11 @@ Readback read_back(std::string_view program, Dialect dialect, MachineKind kind) 
 }
 
 // One program: it reads, moves, and ends at its last words.
-void expect_reads_back(std::string_view program, const json& request, std::string_view path,
-                       const std::string& label) {
+void expect_reads_back(std::string_view program, const json& request,
+                       const api::CalculationRoute& route, const std::string& label) {
   const json options = request.value("program", json::object());
   const Dialect dialect = dialect_of(options.value("dialect", std::string("linuxcnc")));
-  const bool lathe = is_lathe(path);
+  const bool lathe = route.program->machine == MachineKind::lathe;
   const Readback back = read_back(program, dialect, lathe ? MachineKind::lathe : MachineKind::mill);
   ASSERT_FALSE(back.error.has_value())
       << label << ": line " << back.error->line << " column " << back.error->column << " word '"
@@ -176,7 +172,7 @@ TEST(ProgramReadback, EveryProgramOfEveryReferenceRequestReadsInItsDialect) {
                                     item.at("id").get<std::string>() + " " +
                                     variants[v].value("program", json::object()).dump();
           for (const std::string& program : programs) {
-            expect_reads_back(program, variants[v], route.path, label);
+            expect_reads_back(program, variants[v], route, label);
             ++programs_read;
           }
         }

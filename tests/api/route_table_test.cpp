@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -81,6 +82,34 @@ TEST(RouteTable, ARouteLackingItsPathReferenceFileOrPageIsNamed) {
   EXPECT_TRUE(mentions(problems, "no nav link to #thread")) << joined(problems);
 }
 
+// The module is checked once its folder exists under web/ui (the page's modules are moving into
+// web/ui/sections; until then the row names where each will be).
+TEST(RouteTable, EveryPageSectionNamesItsModule) {
+  const std::filesystem::path ui = std::filesystem::path(CUTCALC_WEB_DIR) / "ui";
+  for (const api::CalculationRoute& route : api::calculation_routes()) {
+    if (route.page_section == api::kNoPage) {
+      EXPECT_TRUE(route.page_module.empty()) << route.path;
+      continue;
+    }
+    ASSERT_TRUE(route.page_module.ends_with(".js")) << route.path;
+    const std::filesystem::path module = ui / route.page_module;
+    if (std::filesystem::is_directory(module.parent_path())) {
+      EXPECT_TRUE(std::filesystem::is_regular_file(module)) << route.path << ": " << module;
+    }
+  }
+}
+
+TEST(RouteTable, AProgramWriterThatIsNotHeavyIsNamed) {
+  const std::array routes = {
+      api::CalculationRoute{.path = "/v1/grooving/cycle",
+                            .handler = nullptr,
+                            .forms = api::AnswerForms::json_and_plain_text_program,
+                            .reference_files = {"next/grooving-cycle.json"}}};
+  const auto problems = test_support::route_table_problems(project_inputs(routes));
+  EXPECT_TRUE(mentions(problems, "/v1/grooving/cycle: writes a program but is not heavy"))
+      << joined(problems);
+}
+
 TEST(RouteTable, AnOpenApiCalculationPathWithoutARouteIsNamed) {
   RouteTableInputs inputs = project_inputs(api::calculation_routes());
   inputs.openapi["paths"]["/v1/thread-milling"] = inputs.openapi["paths"]["/v1/main-time"];
@@ -153,9 +182,12 @@ TEST(RouteTable, PrintedAsJsonWithEveryField) {
   EXPECT_EQ(polygon["reference_files"], json({"polygon-hole.json", "next/polygon-hole.json"}));
   EXPECT_EQ(polygon["next_reference_files"], json({"next/polygon-hole.json"}));
   EXPECT_EQ(polygon["page_section"], "polygon");
+  EXPECT_EQ(polygon["page_module"], "sections/polygon.js");
+  EXPECT_EQ(polygon["heavy"], true);
   const json& main_time = rows[1];
   EXPECT_EQ(main_time["plot_field"], nullptr);
   EXPECT_EQ(main_time["forms"], json({"json"}));
+  EXPECT_EQ(main_time["heavy"], false);
 }
 
 }  // namespace

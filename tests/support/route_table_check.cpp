@@ -56,6 +56,15 @@ std::vector<std::string> route_table_problems(const RouteTableInputs& inputs) {
     if (!slugs.insert(api::route_slug(path)).second) {
       problems.push_back(at + "its slug " + api::route_slug(path) + " is another route's");
     }
+    // A program's work grows with the request (its blocks): it must not hold up an event loop.
+    const bool writes_program = route.forms == api::AnswerForms::json_and_plain_text_program;
+    if (writes_program && !route.heavy) {
+      problems.push_back(at + "writes a program but is not heavy");
+    }
+    if (writes_program != (route.program != nullptr)) {
+      problems.push_back(at + (writes_program ? "writes a program but names no program policy"
+                                              : "names a program policy but has no text form"));
+    }
     // openapi: the path, its 200 media types, the plot field.
     if (!paths.contains(path) || !paths[path].contains("post")) {
       problems.push_back(at + "no POST " + path + " in openapi.yaml");
