@@ -284,15 +284,16 @@ Reply HttpApp::answer(const HttpRequest& req) {
       write(res, api::run_json_endpoint(call, route->calculation));
       return finish(exchange, std::move(res));
     }
-    // On the pool: it owns copies of what the calculation reads.
+    // On the pool, with the engine's copy of the request.
     const api::JsonHandler handler = route->calculation;
-    auto run = [exchange, res, handler, body = std::string(req.body),
-                content_type = std::string(headers.content_type),
-                accept = std::string(headers.accept)](const std::atomic<bool>& stop) mutable {
+    auto run = [exchange, res, handler](OwnedRequest& owned,
+                                        const std::atomic<bool>& stop) mutable {
       const domain::InterruptionScope interruptible(stop);
-      write(res, api::run_json_endpoint({exchange.route, content_type, body, exchange.request_id,
-                                         accept, exchange.language, &body},
-                                        handler));
+      const ReadHeaders read = read_headers(owned.request());
+      write(res, api::run_json_endpoint(
+                     {exchange.route, read.content_type, owned.request().body, exchange.request_id,
+                      read.accept, exchange.language, &owned.body_storage()},
+                     handler));
       return std::move(res);
     };
     auto settle = [this, exchange, res](DeferredOutcome outcome, HttpResponse computed,

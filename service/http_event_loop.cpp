@@ -668,6 +668,11 @@ class EventLoopEngine::Loop {
                                     : request.http11 ? ConnectionAfter::keep_alive
                                                      : ConnectionAfter::keep_alive_http10;
       Reply reply = engine_.serve_(request);
+      // Work for the pool reads its own copy, made before the buffers move on.
+      std::shared_ptr<OwnedRequest> owned;
+      if (std::holds_alternative<DeferredResponse>(reply)) {
+        owned = std::make_shared<OwnedRequest>(request);
+      }
       // The request's views die here: the reply owns what it needs.
       connection.consume(frame.wire_bytes);
       end_large_body(connection);
@@ -681,7 +686,8 @@ class EventLoopEngine::Loop {
         // more work until they drain. This request's own body is what the work is for.
         const bool over_budget = engine_.budget_.spent_besides(connection.body_charge);
         if (over_budget) engine_.counters_.memory_refused.fetch_add(1, std::memory_order_relaxed);
-        if (!over_budget && defer(connection, *deferred, head_only, after, request.http11)) {
+        if (!over_budget &&
+            defer(connection, *deferred, std::move(owned), head_only, after, request.http11)) {
           return false;
         }
         respond(
@@ -760,18 +766,18 @@ class EventLoopEngine::Loop {
   // full. Whatever the job does, its connection is answered: by the job's completion (a throw
   // included), else by the calculation timeout (a job that never ends, a completion lost to a
   // failed allocation). A stopped job's completion is not sent: its request is settled already.
-  bool defer(Connection& connection, DeferredResponse& work, bool head_only, ConnectionAfter after,
-             bool http11) {
+  bool defer(Connection& connection, DeferredResponse& work, std::shared_ptr<OwnedRequest> request,
+             bool head_only, ConnectionAfter after, bool http11) {
     const int fd = connection.fd.get();
     const std::uint64_t id = connection.id;
     // The answer takes the place of the body's charge, which goes once it is answered.
     const std::uint64_t body_bytes = connection.body_charge;
     auto stop = std::make_shared<std::atomic<bool>>(false);
-    const bool queued =
-        engine_.pool_->try_submit([this, fd, id, stop, body_bytes, run = std::move(work.run)] {
+    const bool queued = engine_.pool_->try_submit(
+        [this, fd, id, stop, body_bytes, request = std::move(request), run = std::move(work.run)] {
           Completion done{fd, id, {}, false, {}, false, {}};
           try {
-            done.response = run(*stop);
+            done.response = run(*request, *stop);
             // Computed, the answer is held: it is kept only if the budget can count what it holds
             // beyond its body's charge.
             const std::uint64_t bytes =

@@ -92,10 +92,11 @@ enum class DeferredOutcome {
 // handed over is settled exactly once, whatever happens: that is where its metrics and its log
 // line are written.
 struct DeferredResponse {
-  // Runs on a pool thread and owns everything it reads (the request's views die with the call
-  // that gave them). `stop` is set once nobody waits for the answer any more (a timeout, a client
-  // gone): the calculation should stop at its next check (domain/common/interruption.h). May throw.
-  std::function<HttpResponse(const std::atomic<bool>& stop)> run;
+  // Runs on a pool thread, given the request as the engine's own copy (the views the app was
+  // given die with the call that gave them). `stop` is set once nobody waits for the answer any
+  // more (a timeout, a client gone): the calculation should stop at its next check
+  // (domain/common/interruption.h). May throw.
+  std::function<HttpResponse(OwnedRequest& request, const std::atomic<bool>& stop)> run;
   // Runs on the loop, once: the response that goes out. `computed` is run's response (computed),
   // `failure` what run threw (failed); both empty otherwise. abandoned: the answer is dropped.
   std::function<HttpResponse(DeferredOutcome outcome, HttpResponse computed,

@@ -96,6 +96,30 @@ std::string_view HttpRequest::remote_ip() const {
   return addresses == nullptr ? std::string_view{} : std::string_view(addresses->peer().ip);
 }
 
+OwnedRequest::OwnedRequest(const HttpRequest& request) : body_(request.body) {
+  std::size_t head_bytes = request.method.size() + request.target.size() + request.path.size();
+  for (const HeaderField& field : request.fields)
+    head_bytes += field.name.size() + field.value.size();
+  head_.reserve(head_bytes);  // no reallocation below: the views stay valid
+  const auto keep = [this](std::string_view text) {
+    const std::size_t at = head_.size();
+    head_.append(text);
+    return std::string_view(head_).substr(at, text.size());
+  };
+  request_.method = keep(request.method);
+  request_.target = keep(request.target);
+  request_.path = keep(request.path);
+  fields_.reserve(request.fields.size());
+  for (const HeaderField& field : request.fields) {
+    const std::string_view name = keep(field.name);
+    fields_.push_back({name, keep(field.value)});
+  }
+  request_.http11 = request.http11;
+  request_.fields = fields_;
+  request_.body = body_;
+  request_.phase = request.phase;
+}
+
 std::string_view request_path(std::string_view target, std::string& scratch) {
   if (!target.empty() && target.front() != '/' && target != "*") {
     // absolute-form: scheme "://" authority path

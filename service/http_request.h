@@ -46,6 +46,27 @@ struct HttpRequest {
   [[nodiscard]] std::string_view remote_ip() const;
 };
 
+// A request that owns its bytes, for work that reads it after the connection's buffers have moved
+// on (a calculation on the pool): its head in one string, its body in another that the work may
+// let go of once it has read it. Neither copied nor moved: its request's views are of itself.
+class OwnedRequest {
+ public:
+  explicit OwnedRequest(const HttpRequest& request);
+  OwnedRequest(const OwnedRequest&) = delete;
+  OwnedRequest& operator=(const OwnedRequest&) = delete;
+
+  // The request as it was framed, its socket's addresses left out (the connection may be gone).
+  [[nodiscard]] const HttpRequest& request() const { return request_; }
+  // What request().body views.
+  std::string& body_storage() { return body_; }
+
+ private:
+  std::string head_;  // method, target, path, then each field's name and value
+  std::string body_;
+  std::vector<HeaderField> fields_;
+  HttpRequest request_;
+};
+
 // `path` with its %XX escapes decoded, and the %uXXXX ones (a non-standard form that cpp-httplib,
 // which routed cutcalc's requests before its own engine, decodes as UTF-8; kept so that a path
 // means what it meant then). A '%' that starts no escape stays; '+' stays '+'.

@@ -1,6 +1,7 @@
 #pragma once
-// Header values read as RFC 9110 reads them: field names and media types compare ASCII
-// case-insensitively, whatever the locale, and without a libc call per character.
+// Text of protocols and programs read as they define it: HTTP field names and media types (RFC
+// 9110) and G-code words compare ASCII case-insensitively, whatever the locale, and without a libc
+// call per character; nothing outside ASCII is ever folded.
 
 #include <algorithm>
 #include <string_view>
@@ -9,6 +10,10 @@ namespace cutcalc::domain {
 
 constexpr char ascii_lower(char c) {
   return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+}
+
+constexpr char ascii_upper(char c) {
+  return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c;
 }
 
 constexpr bool iequals_ascii(std::string_view a, std::string_view b) {

@@ -1,8 +1,8 @@
 #include "domain/lathe_flat/flat_program.h"
 
-#include <cctype>
 #include <utility>
 
+#include "domain/common/ascii_text.h"
 #include "domain/common/numeric.h"
 #include "domain/program/dialect_writer.h"
 #include "domain/program/lathe_program.h"
@@ -32,7 +32,7 @@ constexpr LatheModalLines kModalLines{
 
 std::string upper(std::string_view text) {
   std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (char& c : out) c = ascii_upper(c);
   return out;
 }
 

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <system_error>
 
+#include "domain/common/ascii_text.h"
+
 namespace cutcalc::domain::machine_time::detail {
 namespace {
 
@@ -19,7 +21,6 @@ constexpr bool is_identifier(char c) { return is_alpha(c) || is_digit(c) || c ==
 constexpr bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }
-constexpr char to_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c; }
 
 // Larger numbers are typing errors, and would overflow the planner's squares.
 constexpr double kLargestNumber = 1e12;
@@ -32,7 +33,7 @@ constexpr std::array<double, 23> kPow10 = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1
 bool equals_upper(std::string_view text, std::string_view upper_word) {
   if (text.size() != upper_word.size()) return false;
   for (std::size_t i = 0; i < text.size(); ++i) {
-    if (to_upper(text[i]) != upper_word[i]) return false;
+    if (ascii_upper(text[i]) != upper_word[i]) return false;
   }
   return true;
 }
@@ -228,7 +229,7 @@ class LineLexer {
     return sinumerik_identifier(begin, end, name);
   }
 
-  bool letter_is_o(std::size_t at) const { return to_upper(line_[at]) == 'O'; }
+  bool letter_is_o(std::size_t at) const { return ascii_upper(line_[at]) == 'O'; }
 
   // LinuxCNC o-words (o100 sub, o<name> call, while, if, ...); Fanuc O numbers are read as words.
   bool o_word(std::size_t begin) {
@@ -364,7 +365,7 @@ class LineLexer {
 
   bool letter_word() {
     const std::size_t begin = i_;
-    const char letter = to_upper(peek());
+    const char letter = ascii_upper(peek());
     if (letter == 'O' && dialect_ == Dialect::linuxcnc) return o_word(begin);
     if (dialect_ == Dialect::sinumerik) {
       if (letter == 'R') return refuse(Refusal::parameter, begin, identifier_end(begin + 1));

@@ -9,6 +9,7 @@
 #include <memory>
 #include <utility>
 
+#include "domain/common/ascii_text.h"
 #include "domain/program/block_list_writer.h"
 #include "domain/program/block_words.h"
 
@@ -255,7 +256,7 @@ std::string comment_text(std::string_view text, Dialect dialect) {
   out.reserve(text.size());
   for (char c : text) {
     if (c == '(' || c == ')' || c == ';' || c == '%') c = ' ';
-    if (dialect == Dialect::fanuc && c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+    if (dialect == Dialect::fanuc) c = ascii_upper(c);
     out.push_back(c);
   }
   return out;

@@ -110,8 +110,8 @@ class HeldEngine {
       return text(200, "light");
     }
     return DeferredResponse{
-        [this, path = std::string(request.path),
-         tag = std::string(request.header("X-Tag"))](const std::atomic<bool>& stop) {
+        [this, path = std::string(request.path), tag = std::string(request.header("X-Tag"))](
+            OwnedRequest&, const std::atomic<bool>& stop) {
           if (path == "/stuck") {
             while (!stop.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
             stopped_.fetch_add(1);

@@ -104,7 +104,7 @@ class StatesEngine {
       return response;
     }
     DeferredResponse work;
-    work.run = [](const std::atomic<bool>& stop) {
+    work.run = [](OwnedRequest&, const std::atomic<bool>& stop) {
       while (!stop.load()) std::this_thread::sleep_for(milliseconds(5));
       return HttpResponse{};
     };

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace cutcalc::service {
 namespace {
@@ -45,6 +48,37 @@ TEST(RequestPath, IsTheDecodedPathOfTheTarget) {
   EXPECT_EQ(request_path("http://cutcalc/v1/x?y", scratch), "/v1/x");
   EXPECT_EQ(request_path("http://cutcalc", scratch), "/");
   EXPECT_EQ(request_path("*", scratch), "*");
+}
+
+TEST(OwnedRequest, KeepsEveryPartOfTheRequestAfterTheBuffersAreGone) {
+  auto buffer = std::make_unique<std::string>("POST/v1/x?a/v1/xContent-Typeapplication/json{}");
+  const std::string_view bytes = *buffer;
+  const std::vector<HeaderField> fields{{bytes.substr(16, 12), bytes.substr(28, 16)}};
+  HttpRequest framed;
+  framed.method = bytes.substr(0, 4);
+  framed.target = bytes.substr(4, 7);
+  framed.path = bytes.substr(11, 5);
+  framed.http11 = false;
+  framed.fields = fields;
+  framed.body = bytes.substr(44);
+  framed.phase = ServerPhase::draining;
+  OwnedRequest owned(framed);
+  buffer->assign(buffer->size(), '#');  // the connection's buffer reused
+  buffer.reset();
+
+  const HttpRequest& request = owned.request();
+  EXPECT_EQ(request.method, "POST");
+  EXPECT_EQ(request.target, "/v1/x?a");
+  EXPECT_EQ(request.path, "/v1/x");
+  EXPECT_FALSE(request.http11);
+  EXPECT_EQ(request.header("content-type"), "application/json");
+  EXPECT_EQ(request.body, "{}");
+  EXPECT_EQ(request.phase, ServerPhase::draining);
+  EXPECT_EQ(request.addresses, nullptr);
+  // The body is the work's to let go of once read.
+  owned.body_storage().clear();
+  owned.body_storage().shrink_to_fit();
+  EXPECT_EQ(owned.request().method, "POST");
 }
 
 }  // namespace
