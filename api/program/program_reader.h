@@ -24,7 +24,8 @@ enum class ProgramKind {
 // The `program` object of `root` (absent: every default of `kind`).
 domain::program::ProgramOptions read_program_options(ObjectReader& root, ProgramKind kind);
 
-// [{code, detail}, ...] of either program, the code by its name.
+// [{code, detail}, ...] of either program, the code by its name. Each item's message, in the
+// request's language, is added by the pipeline that knows it (api/warning_catalogue.h).
 nlohmann::json to_json(const std::vector<domain::program::Warning>& warnings);
 
 }  // namespace cutcalc::api::program

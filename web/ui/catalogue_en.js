@@ -325,13 +325,6 @@ export default {
   'not_modelled.spindle_and_coolant_start': 'spindle and coolant start',
   'not_modelled.first_positioning_move': 'first positioning move',
   'not_modelled.non_linear_rapids': 'non-linear rapids',
-  // A program's warnings (the API's codes; its detail is English only)
-  'warning.spindle_over_limit': 'The spindle speed is above the machine’s limit (max_spindle_rpm).',
-  'warning.feed_over_limit': 'A programmed feed is above the machine’s limit (max_feed_mm_per_min).',
-  'warning.spindle_speed_rounded': 'The spindle speed is rounded: a Fanuc S word takes no decimals.',
-  'warning.rounding_exceeds_tolerance': 'The program as printed deviates from the exact path by more than the arc-fit tolerance: print more decimals.',
-  'warning.feed_exceeds_block_rate': 'The programmed feed is above the block-rate feed limit: the control will starve.',
-  'warning.phase_not_locked': 'G95 does not lock the rotor angle to the path: start with corner 0 pointing −Y.',
   // Diagrams: titles, axes, captions
   'diagram.feed': 'feed',
   'diagram.entry_scheme_title': 'Entry scheme to scale: workpiece, contour, steady band and the cutter at start, first contact and saturation',
@@ -460,9 +453,6 @@ export default {
   'result.grooving_program_from': 'From {path}: {dialect}, {units}, {decimals} decimals, file {file}. X is the diameter.',
   'grooving.side.left': 'left',
   'grooving.side.right': 'right',
-  'warning.spindle_speed_limited': 'Constant surface speed reaches the spindle limit above the bottom: the speed is clamped there.',
-  'warning.shift_outside_paper_range': 'The axial shift X_{2} is outside the paper\'s tested 0.3–0.5 mm.',
-  'warning.pattern_not_repeated': 'Fewer than 5 revolutions: the pattern does not repeat, so the wall pitch and Rz are those of the developed pattern.',
   'legend.groove_contour': 'groove',
   'legend.tool_at_start': 'tool at the start',
   'legend.tool_after_final_shift': 'tool after the final shift',
@@ -546,7 +536,6 @@ export default {
   'result.flat_radius': '(radius)',
   'result.flat_chord': 'Chord',
   'result.flat_program_from': 'From {path}: {dialect}, {units}, {decimals} decimals, file {file}. X is the diameter, C in degrees, G93 inverse-time feed on every C block.',
-  'warning.flatness_over_tolerance': 'The flatness error of the given N is above the tolerance.',
   'legend.flat_stock': 'part before milling',
   'legend.flat_finished': 'finished cross-section',
   'legend.flat_tool': 'tool at a step',
@@ -640,11 +629,6 @@ export default {
   'limit.arc': 'the speed limit on the arc',
   'limit.segment_length': 'one segment per servo period',
   'limit.blend': 'a corner or blend',
-  // A program's machine time warnings (the API's codes)
-  'warning.axis_caps_feed': 'Some blocks ask for a feed above what the axes (or the trajectory maximum) allow along them: they run slower.',
-  'warning.segment_too_short': 'Some segments are too short for their feed at one segment per servo period: they run slower.',
-  'warning.untimed_stop': 'The program stops for the operator or a tool change (M0, M1, M6): these stops are not in the time.',
-  'warning.units_assumed': 'The program states no units (G20 or G21): it is read in mm.',
   // The other program sections timed on the machine profile (machine.js)
   'result.on_this_machine': 'On this machine',
   'result.nominal_short': 'nominal',

@@ -324,13 +324,6 @@ export default {
   'not_modelled.spindle_and_coolant_start': 'пуск шпинделя и СОЖ',
   'not_modelled.first_positioning_move': 'первое позиционирование',
   'not_modelled.non_linear_rapids': 'нелинейные ускоренные перемещения',
-  // A program's warnings (the API's codes; its detail is English only)
-  'warning.spindle_over_limit': 'Частота вращения шпинделя выше предела станка (max_spindle_rpm).',
-  'warning.feed_over_limit': 'Запрограммированная подача выше предела станка (max_feed_mm_per_min).',
-  'warning.spindle_speed_rounded': 'Частота вращения округлена: слово S в Fanuc не допускает дробной части.',
-  'warning.rounding_exceeds_tolerance': 'Программа в напечатанном виде отклоняется от точной траектории больше допуска аппроксимации: выводите больше знаков.',
-  'warning.feed_exceeds_block_rate': 'Запрограммированная подача выше предела по скорости обработки кадров: ЧПУ не успеет читать кадры.',
-  'warning.phase_not_locked': 'G95 не привязывает угол ротора к траектории: начинайте с угла 0, направленного в −Y.',
   // Diagrams: titles, axes, captions
   'diagram.feed': 'подача',
   'diagram.entry_scheme_title': 'Схема входа в масштабе: заготовка, контур, полоса установившегося резания и фреза в начале, при первом контакте и при насыщении',
@@ -459,9 +452,6 @@ export default {
   'result.grooving_program_from': 'Из {path}: {dialect}, {units}, знаков после запятой {decimals}, файл {file}. X — диаметр.',
   'grooving.side.left': 'слева',
   'grooving.side.right': 'справа',
-  'warning.spindle_speed_limited': 'Постоянная скорость резания доходит до предела частоты вращения выше дна: там частота ограничена.',
-  'warning.shift_outside_paper_range': 'Осевое смещение X_{2} вне проверенного в статье диапазона 0,3–0,5 мм.',
-  'warning.pattern_not_repeated': 'Меньше 5 оборотов: схема не повторяется, шаг и Rz стенки — для установившейся схемы.',
   'legend.groove_contour': 'канавка',
   'legend.tool_at_start': 'резец в начале',
   'legend.tool_after_final_shift': 'резец после окончательного смещения',
@@ -545,7 +535,6 @@ export default {
   'result.flat_radius': '(радиус)',
   'result.flat_chord': 'Хорда',
   'result.flat_program_from': 'Из {path}: {dialect}, {units}, знаков после запятой: {decimals}, файл {file}. X — диаметр, C в градусах, обратная подача G93 в каждом кадре с C.',
-  'warning.flatness_over_tolerance': 'Отклонение от плоскостности при заданном N больше допуска.',
   'legend.flat_stock': 'деталь до фрезерования',
   'legend.flat_finished': 'готовое сечение',
   'legend.flat_tool': 'инструмент в точке шага',
@@ -640,10 +629,6 @@ export default {
   'limit.segment_length': 'один отрезок за период сервоцикла',
   'limit.blend': 'угол или скругление',
   // Предупреждения о времени на станке (коды API)
-  'warning.axis_caps_feed': 'Некоторые кадры задают подачу выше, чем позволяют оси (или предел траектории) в их направлении: они выполняются медленнее.',
-  'warning.segment_too_short': 'Некоторые отрезки слишком коротки для своей подачи при одном отрезке за период сервоцикла: они выполняются медленнее.',
-  'warning.untimed_stop': 'Программа останавливается для оператора или смены инструмента (M0, M1, M6): эти остановки во время не входят.',
-  'warning.units_assumed': 'Программа не задаёт единицы (G20 или G21): она прочитана в миллиметрах.',
   // Другие разделы с программами, рассчитанные по профилю станка (machine.js)
   'result.on_this_machine': 'На этом станке',
   'result.nominal_short': 'номинально',

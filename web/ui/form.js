@@ -3,7 +3,7 @@
 
 import { fileNameOf, numberLiteral, postJson, RawNumber } from './api.js';
 import { saveFile } from './export.js';
-import { has, t } from './i18n.js';
+import { t } from './i18n.js';
 import { converts, fromApi, inputUnit, shownUnit, toApi, unitText } from './units.js';
 
 // Element builder: h('p', {class: 'x', 'data-a': 1}, 'text', child, ...). Attributes only: no
@@ -249,13 +249,13 @@ export function value(
     : num;
 }
 
-// A program's warnings: each code (data-result) with its sentence in the page's language. The
-// API's own detail is English whatever the language (a 200 answer is the same in every
-// language): it is shown only for a code the catalogue does not know yet.
+// A program's warnings: each code (data-result) with the API's sentence for it, in the language
+// the page asked for (Accept-Language); the API keeps the one catalogue of warnings. Its detail,
+// English with the numbers, is the program's comment line: shown only when there is no message.
 export function warningList(body) {
   const warnings = Array.isArray(body.warnings) ? body.warnings : [];
   if (!warnings.length) return [];
-  const sentence = (w) => (has(`warning.${w.code}`) ? t(`warning.${w.code}`) : w.detail);
+  const sentence = (w) => w.message ?? w.detail;
   return h(
     'ul',
     { class: 'warnings' },
