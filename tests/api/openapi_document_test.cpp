@@ -366,9 +366,9 @@ TEST(OpenApiDocument, EveryOperationHasAUniqueOperationIdSummaryDescriptionAndTa
     ASSERT_TRUE(o.op->contains("tags")) << id;
     EXPECT_FALSE((*o.op)["tags"].empty()) << id;
   }
-  // 17 paths (10 calculations, 5 operations, the web page and its assets), each with OPTIONS; the
-  // 7 GET paths with HEAD.
-  EXPECT_EQ(ids.size(), 17U + 17U + 7U);
+  // 18 paths (10 calculations, 5 operations, the web page, its top assets and its modules), each
+  // with OPTIONS; the 8 GET paths with HEAD.
+  EXPECT_EQ(ids.size(), 18U + 18U + 8U);
 }
 
 TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {

@@ -349,7 +349,7 @@ export default {
   'diagram.rotor_flank_radius': 'R{m} = {value}',
   'diagram.rotor_corner_angle': 'corner {value} {unit}',
   'diagram.rotor_caption': 'Rotor frame: tool axis at the centre, corner 0 pointing −Y (the pose at the loop start), Y up.',
-  // The bore milling diagrams (bore_diagram.js)
+  // The bore milling diagrams (diagrams/bore_roughness_diagram.js)
   'diagram.bore_title': 'Bore R = {bore} {unit}, cutter r = {cutter} {unit} at the contacts of two successive teeth',
   'diagram.bore_description': 'Bore, centre path and cutter to scale; the cutter is drawn at the contacts of two successive teeth.',
   'diagram.drawn_larger': '(drawn larger)',
@@ -379,7 +379,7 @@ export default {
   'error.network': 'network error',
   'error.unreachable': 'the service could not be reached ({reason})',
   'error.download_failed': 'Download failed: {reason}',
-  // The grooving cycle "v razvod" (grooving.js, grooving_diagram.js)
+  // The grooving cycle "v razvod" (sections/grooving_cycle.js, diagrams/grooving_cycle_diagram.js)
   'section.grooving_cycle': 'Grooving cycle',
   'about.grooving_cycle': 'The narrow-groove cycle "v razvod": a grooving tool narrower than the groove by X_{2} plunges at S_{0} per revolution and moves by X_{2} axially, alternately, in every other revolution; a final shift at the bottom gives the groove its width. The revolutions, times, wall roughness and the lathe program (paper 003).',
   'legend.groove': 'Groove',
@@ -461,12 +461,6 @@ export default {
   'legend.final_shift': 'dwell and final shift at the bottom',
   'diagram.grooving_section_title': 'The groove to scale as a half-section, with the tool at its start and after the final shift',
   'diagram.grooving_section_caption': 'To scale: Z to the right, radius up; the tool\'s reference point is its left corner, at X = D_{a}, Z = z_{L} at the start.',
-  'diagram.grooving_width': 'W = {value}',
-  'diagram.grooving_tool_width': 'B = {value}',
-  'diagram.grooving_shift': 'X_{2} = {value}',
-  'diagram.grooving_depth': 'h = {value}',
-  'diagram.grooving_start_diameter': 'D_{0} = {value}',
-  'diagram.grooving_bottom_diameter': 'D_{b} = {value}',
   'diagram.grooving_start_point': 'start X = {value}',
   'diagram.grooving_pattern_title': 'The shift pattern: the tool\'s Z in each revolution of the plunge, and the final shift at the bottom',
   'diagram.grooving_at_left': 'Z = z_{L}',
@@ -475,7 +469,7 @@ export default {
   'diagram.grooving_revolution': 'rev. {k}',
   'diagram.grooving_final_shift': 'final shift {value} in {revolutions} rev',
   'diagram.grooving_pattern_caption': 'Schematic (not to scale): a row per spindle revolution, {infeed} deeper each; the depth on the right. A tool corner meets each wall every 4 revolutions: wall pitch {pitch}. Shift {shift}.',
-  // A flat milled on a lathe by C-axis steps (flat.js, flat_diagram.js)
+  // A flat milled on a lathe by C-axis steps (sections/lathe_flat.js, diagrams/lathe_flat_diagram.js)
   'section.lathe_flat': 'Flat on a lathe',
   'about.lathe_flat': 'A flat (a wrench flat or the faces of a polygon) milled on a lathe with a driven end mill and no polar interpolation: the spindle turns as a C axis in N equal steps per half-flat while X follows. Between steps the tool runs on an Archimedean spiral and leaves a small hump: the flatness error. The geometry, step table, flatness error (or the N a tolerance needs), layers, block-rate limit, time and a G93 inverse-time program (paper 000, Figs. 12–13).',
   'legend.part_and_flats': 'Part and flats',

@@ -348,7 +348,7 @@ export default {
   'diagram.rotor_flank_radius': 'R{m} = {value}',
   'diagram.rotor_corner_angle': 'вершина {value} {unit}',
   'diagram.rotor_caption': 'Система координат ротора: ось инструмента в центре, вершина 0 направлена к −Y (положение в начале петли), Y вверх.',
-  // The bore milling diagrams (bore_diagram.js)
+  // The bore milling diagrams (diagrams/bore_roughness_diagram.js)
   'diagram.bore_title': 'Отверстие R = {bore} {unit}, фреза r = {cutter} {unit} в точках контакта двух соседних зубьев',
   'diagram.bore_description': 'Отверстие, траектория центра и фреза в масштабе; фреза показана в точках контакта двух соседних зубьев с отверстием.',
   'diagram.drawn_larger': '(показан увеличенным)',
@@ -378,7 +378,7 @@ export default {
   'error.network': 'ошибка сети',
   'error.unreachable': 'сервис недоступен ({reason})',
   'error.download_failed': 'Не удалось скачать: {reason}',
-  // The grooving cycle "v razvod" (grooving.js, grooving_diagram.js)
+  // The grooving cycle "v razvod" (sections/grooving_cycle.js, diagrams/grooving_cycle_diagram.js)
   'section.grooving_cycle': 'Цикл прорезки канавки',
   'about.grooving_cycle': 'Цикл прорезки узкой канавки «вразвод»: резец уже канавки на X_{2} врезается с подачей S_{0} на оборот и через оборот смещается вдоль оси на X_{2}, попеременно в обе стороны; окончательное смещение на дне даёт канавке её ширину. Обороты, время, шероховатость стенок и программа для токарного станка (статья 003).',
   'legend.groove': 'Канавка',
@@ -460,12 +460,6 @@ export default {
   'legend.final_shift': 'выдержка и окончательное смещение на дне',
   'diagram.grooving_section_title': 'Канавка в масштабе (полуразрез), резец в начале и после окончательного смещения',
   'diagram.grooving_section_caption': 'В масштабе: Z вправо, радиус вверх; точка привязки резца — его левая вершина, в начале X = D_{a}, Z = z_{L}.',
-  'diagram.grooving_width': 'W = {value}',
-  'diagram.grooving_tool_width': 'B = {value}',
-  'diagram.grooving_shift': 'X_{2} = {value}',
-  'diagram.grooving_depth': 'h = {value}',
-  'diagram.grooving_start_diameter': 'D_{0} = {value}',
-  'diagram.grooving_bottom_diameter': 'D_{b} = {value}',
   'diagram.grooving_start_point': 'начало X = {value}',
   'diagram.grooving_pattern_title': 'Схема смещений: положение резца по Z в каждом обороте врезания и окончательное смещение на дне',
   'diagram.grooving_at_left': 'Z = z_{L}',
@@ -474,7 +468,7 @@ export default {
   'diagram.grooving_revolution': 'об. {k}',
   'diagram.grooving_final_shift': 'окончательное смещение {value} за {revolutions} об',
   'diagram.grooving_pattern_caption': 'Схема (не в масштабе): строка на каждый оборот шпинделя, каждый глубже на {infeed}; глубина справа. Вершина резца касается каждой стенки раз в 4 оборота: шаг на стенке {pitch}. Смещение {shift}.',
-  // Лыска на токарном станке шагами C (flat.js, flat_diagram.js)
+  // Лыска на токарном станке шагами C (sections/lathe_flat.js, diagrams/lathe_flat_diagram.js)
   'section.lathe_flat': 'Лыска на токарном станке',
   'about.lathe_flat': 'Лыска (под ключ или грани многогранника), фрезеруемая на токарном станке приводной концевой фрезой без полярной интерполяции: шпиндель поворачивается как ось C на N равных шагов на половину лыски, а X следует за ним. Между шагами инструмент идёт по спирали Архимеда и оставляет небольшой гребень — отклонение от плоскостности. Геометрия, таблица шагов, отклонение от плоскостности (или N для допуска), слои, предел по скорости обработки кадров, время и программа с обратной подачей G93 (статья 000, рис. 12–13).',
   'legend.part_and_flats': 'Деталь и лыски',
