@@ -57,15 +57,18 @@ TEST(WarningCatalogue, EveryCodeIsFoundByItsWireName) {
 }
 
 TEST(WarningCatalogue, MessagesReachTheListsOfMemberObjectsAndKeepTheDetail) {
-  json answer = {{"warnings", {{{"code", "units_assumed"}, {"detail", "read as mm"}}}},
-                 {"machine_time", {{"warnings", {{{"code", "untimed_stop"}, {"detail", "M0"}}}}}},
-                 {"profile", {{{"warnings", json::array()}}}}};
+  json answer = json::parse(R"({
+    "warnings": [{"code": "units_assumed", "detail": "read as mm"}],
+    "machine_time": {"warnings": [{"code": "untimed_stop", "detail": "M0"}]},
+    "profile": [{"warnings": [{"code": "untimed_stop", "detail": "not a list of this answer"}]}]})");
   EXPECT_TRUE(add_warning_messages(answer, Language::ru));
-  EXPECT_EQ(answer["warnings"][0]["message"],
+  EXPECT_EQ(answer["warnings"][0]["message"].get<std::string>(),
             warning_message(WarningCode::units_assumed, Language::ru));
-  EXPECT_EQ(answer["warnings"][0]["detail"], "read as mm");
-  EXPECT_EQ(answer["machine_time"]["warnings"][0]["message"],
+  EXPECT_EQ(answer["warnings"][0]["detail"].get<std::string>(), "read as mm");
+  EXPECT_EQ(answer["machine_time"]["warnings"][0]["message"].get<std::string>(),
             warning_message(WarningCode::untimed_stop, Language::ru));
+  // Arrays are not searched: they hold no warnings lists of the answer and may be long.
+  EXPECT_FALSE(answer["profile"][0]["warnings"][0].contains("message"));
   json no_warnings = {{"main_time_min", 1.5}};
   EXPECT_FALSE(add_warning_messages(no_warnings, Language::ru));
   EXPECT_FALSE(no_warnings.contains("warnings"));
@@ -73,7 +76,8 @@ TEST(WarningCatalogue, MessagesReachTheListsOfMemberObjectsAndKeepTheDetail) {
 
 // The worked example of the pass program with a machine that both limits trip.
 std::string program_over_the_limits() {
-  for (const json& c : testing::load_reference("main-time-program.json")["cases"]) {
+  const json reference = testing::load_reference("main-time-program.json");
+  for (const json& c : reference.at("cases")) {
     if (c.at("id") != "prog-P-WORKED") continue;
     json request = c.at("request");
     request["machine"] = {{"max_spindle_rpm", 500}, {"max_feed_mm_per_min", 100}};
@@ -89,11 +93,13 @@ struct WarnedAnswer {
   std::string vary;
 };
 
-WarnedAnswer post_in(const std::string& accept_language) {
+WarnedAnswer post_in(const std::string& accept_language,
+                     const std::string& path = testing::kMainTimeProgramPath) {
+  json request = json::parse(program_over_the_limits());
+  if (path != testing::kMainTimeProgramPath) request.erase("program");
   auto client = testing::TestServer::shared().client();
-  const auto reply =
-      client->Post(testing::kMainTimeProgramPath, {{"Accept-Language", accept_language}},
-                   program_over_the_limits(), "application/json");
+  const auto reply = client->Post(path, {{"Accept-Language", accept_language}}, request.dump(),
+                                  "application/json");
   if (!reply || reply->status != 200) {
     ADD_FAILURE() << "no 200 answer";
     return {};
@@ -118,12 +124,25 @@ TEST(WarningLanguage, AcceptLanguageRuGivesRussianMessagesAndTheSameCodesAndDeta
     EXPECT_EQ(ru.at("detail"), en.at("detail")) << "the detail is the comment line's English";
     const auto code = warning_code_named(ru.at("code").get<std::string>());
     ASSERT_TRUE(code.has_value());
-    EXPECT_EQ(ru.at("message"), warning_message(*code, Language::ru));
-    EXPECT_EQ(en.at("message"), warning_message(*code, Language::en));
+    EXPECT_TRUE(has_cyrillic(ru.at("message").get<std::string>())) << ru;
+    EXPECT_FALSE(has_cyrillic(en.at("message").get<std::string>())) << en;
+    EXPECT_EQ(ru.at("message").get<std::string>(), warning_message(*code, Language::ru));
+    EXPECT_EQ(en.at("message").get<std::string>(), warning_message(*code, Language::en));
   }
   EXPECT_EQ(russian.content_language, "ru");
   EXPECT_EQ(english.content_language, "en");
   EXPECT_NE(russian.vary.find("Accept-Language"), std::string::npos) << russian.vary;
+}
+
+// An answer that is no program (a JSON object, not streamed) speaks the language too.
+TEST(WarningLanguage, MainTimeWarningsAreRussianForAcceptLanguageRu) {
+  const WarnedAnswer russian = post_in("ru", "/v1/main-time");
+  ASSERT_EQ(russian.warnings.size(), 2U);
+  for (const json& warning : russian.warnings) {
+    EXPECT_TRUE(has_cyrillic(warning.at("message").get<std::string>())) << warning;
+    EXPECT_FALSE(has_cyrillic(warning.at("detail").get<std::string>())) << warning;
+  }
+  EXPECT_EQ(russian.content_language, "ru");
 }
 
 // The page shows the server's sentence (warnings[].message): no catalogue of the page holds a

@@ -36,7 +36,7 @@ const MM_PER_INCH = 25.4;
 const VX = '/machine/axes/x/max_velocity_mm_per_min';
 
 const catalogue = async name => {
-  const source = readFileSync(path.join(repo, 'web', 'ui', `catalogue_${name}.js`), 'utf8');
+  const source = readFileSync(path.join(repo, 'web', 'ui', 'core', `catalogue_${name}.js`), 'utf8');
   return (await import(`data:text/javascript,${encodeURIComponent(source)}`)).default;
 };
 const EN = await catalogue('en');
