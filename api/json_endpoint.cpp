@@ -8,6 +8,7 @@
 #include "api/accept_header.h"
 #include "api/json_body.h"
 #include "api/streamed_json.h"
+#include "api/warning_catalogue.h"
 
 namespace cutcalc::api {
 
@@ -57,6 +58,13 @@ ApiResponse non_finite(const ApiRequest& request, std::string_view body_start) {
       std::string(request.path), std::string(request.request_id), request.language);
 }
 
+// An answer whose warnings[] speak the request's language: caches must keep the languages apart,
+// as for problem details.
+void say_language(ApiResponse& answer, Language language) {
+  answer.headers.emplace_back("Content-Language", std::string(language_tag(language)));
+  answer.headers.emplace_back("Vary", "Accept-Language");
+}
+
 }  // namespace
 
 ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
@@ -98,13 +106,16 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
     }
     if (document->program_source) {
       if (!all_numbers_finite(document->json)) return non_finite(request, body_start);
-      return ApiResponse{200,
+      const bool in_language = add_warning_messages(document->json, request.language);
+      ApiResponse answer{200,
                          "application/json",
                          {},
                          {{"Vary", "Accept"}},
                          json_with_streamed_string("program", std::move(document->program_source),
                                                    std::move(document->json),
                                                    std::move(document->members_after_program))};
+      if (in_language) say_language(answer, request.language);
+      return answer;
     }
     write_whole(*document);
     nlohmann::json json_form = std::move(document->json);  // moved out before the variant changes
@@ -112,13 +123,16 @@ ApiResponse run_json_endpoint(const ApiRequest& request, JsonHandler handler) {
     chosen_by_accept = true;
   }
   auto* text = std::get_if<JsonText>(&outcome);
-  const auto* body = std::get_if<nlohmann::json>(&outcome);
+  auto* body = std::get_if<nlohmann::json>(&outcome);
   if (text != nullptr ? !text->all_finite : !all_numbers_finite(*body)) {
     return non_finite(request, body_start);
   }
+  // A JsonText answer is written straight to text and carries no warnings.
+  const bool in_language = body != nullptr && add_warning_messages(*body, request.language);
   ApiResponse answer{
       200, "application/json", text != nullptr ? std::move(text->text) : body->dump(), {}, {}};
   if (chosen_by_accept) answer.headers.emplace_back("Vary", "Accept");
+  if (in_language) say_language(answer, request.language);
   return answer;
 }
 

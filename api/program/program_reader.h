@@ -46,7 +46,8 @@ inline MachineUse machine_use(const ProgramPolicy& policy) {
                                                                     : MachineUse::program_mill;
 }
 
-// [{code, detail}, ...] of either program, the code by its name.
+// [{code, detail}, ...] of either program, the code by its name. Each item's message, in the
+// request's language, is added by the pipeline that knows it (api/warning_catalogue.h).
 nlohmann::json to_json(const std::vector<domain::program::Warning>& warnings);
 
 }  // namespace cutcalc::api::program

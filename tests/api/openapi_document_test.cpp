@@ -197,7 +197,8 @@ json polygon_hole_body() {
     "max_path_deviation_mm": 0.000505685, "predicted_overcut_mm": 0.0414403,
     "uncut_corner_area_mm2": 3.14869997153, "corner_gap_mm": 0.771010537418,
     "max_feed_by_block_rate_mm_per_min": 6880.93938,
-    "warnings": [{"code": "phase_not_locked", "detail": "G95 does not lock the phase"}]})");
+    "warnings": [{"code": "phase_not_locked", "detail": "G95 does not lock the phase",
+                  "message": "G95 does not lock the rotor angle to the path"}]})");
   body["program"] = polygon_program(4, 16.0);
   body.update(polygon_rotor_and_times());
   return body;
@@ -226,7 +227,8 @@ json complete_polygon_body(const json& reference_case) {
   }
   body["warnings"] = json::array();
   for (const auto& code : expect["warning_codes"]) {
-    body["warnings"].push_back({{"code", code}, {"detail", "as in the reference case"}});
+    body["warnings"].push_back(
+        {{"code", code}, {"detail", "as in the reference case"}, {"message", "a sentence"}});
   }
   body["program"] =
       polygon_program(request["faces"].get<int>(), request["inscribed_diameter_mm"].get<double>());
@@ -370,9 +372,9 @@ TEST(OpenApiDocument, EveryOperationHasAUniqueOperationIdSummaryDescriptionAndTa
     ASSERT_TRUE(o.op->contains("tags")) << id;
     EXPECT_FALSE((*o.op)["tags"].empty()) << id;
   }
-  // 17 paths (10 calculations, 5 operations, the web page and its assets), each with OPTIONS; the
-  // 7 GET paths with HEAD.
-  EXPECT_EQ(ids.size(), 17U + 17U + 7U);
+  // 18 paths (10 calculations, 5 operations, the web page, its top assets and its modules), each
+  // with OPTIONS; the 8 GET paths with HEAD.
+  EXPECT_EQ(ids.size(), 18U + 18U + 8U);
 }
 
 TEST(OpenApiDocument, JsonBodyOperationsDocumentEveryErrorStatusAsProblemJson) {
@@ -1122,7 +1124,8 @@ TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
   no_warnings["warnings"] = json::array();
   EXPECT_TRUE(project_contract().check_response("POST", path, 200, aj, no_warnings).empty());
   json both_warnings = good;
-  both_warnings["warnings"].push_back({{"code", "feed_exceeds_block_rate"}, {"detail", "x"}});
+  both_warnings["warnings"].push_back(
+      {{"code", "feed_exceeds_block_rate"}, {"detail", "x"}, {"message", "y"}});
   EXPECT_TRUE(project_contract().check_response("POST", path, 200, aj, both_warnings).empty());
   json bad_code = good;
   bad_code["warnings"][0]["code"] = "phase_slip";
@@ -1132,6 +1135,10 @@ TEST(OpenApiDocument, PolygonHoleAnswersJsonOrThePlainProgram) {
   no_detail["warnings"][0].erase("detail");
   EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, no_detail),
                             "/warnings/0/detail"));
+  json no_message = good;
+  no_message["warnings"][0].erase("message");
+  EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, no_message),
+                            "/warnings/0/message"));
   json negative = good;
   negative["corner_gap_mm"] = -0.1;
   EXPECT_TRUE(names_pointer(project_contract().check_response("POST", path, 200, aj, negative),

@@ -2,7 +2,7 @@
 // symbols of 6): Playwright (playwright-core) drives Debian's headless Chromium against a live
 // cutcalc.
 //
-//   - catalogues: web/ui/catalogue_en.js and catalogue_ru.js have the same keys, no empty text and
+//   - catalogues: web/ui/core/catalogue_en.js and catalogue_ru.js have the same keys, no empty text and
 //     the same {placeholders};
 //   - every visible text of the page (English and Russian, mm and inch, every section calculated)
 //     is a catalogue text, a symbol (var.sym, var.iso), a number or punctuation: no word of the
@@ -39,7 +39,7 @@ const MM_PER_INCH = 25.4;
 
 // The page's catalogue modules as the browser loads them (ES modules; web/ has no package.json).
 const catalogue = async name => {
-  const source = readFileSync(path.join(repo, 'web', 'ui', `catalogue_${name}.js`), 'utf8');
+  const source = readFileSync(path.join(repo, 'web', 'ui', 'core', `catalogue_${name}.js`), 'utf8');
   return (await import(`data:text/javascript,${encodeURIComponent(source)}`)).default;
 };
 const CATALOGUES = { en: await catalogue('en'), ru: await catalogue('ru') };

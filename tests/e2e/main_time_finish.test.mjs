@@ -20,7 +20,7 @@ const MM_PER_INCH = 25.4;
 const LENGTH_UNITS = new Set(['mm', 'mm_per_tooth', 'mm_per_rev', 'mm_per_min']);
 
 const catalogue = async name => {
-  const source = readFileSync(path.join(repo, 'web', 'ui', `catalogue_${name}.js`), 'utf8');
+  const source = readFileSync(path.join(repo, 'web', 'ui', 'core', `catalogue_${name}.js`), 'utf8');
   return (await import(`data:text/javascript,${encodeURIComponent(source)}`)).default;
 };
 const CATALOGUES = { en: await catalogue('en'), ru: await catalogue('ru') };

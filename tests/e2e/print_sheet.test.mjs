@@ -55,7 +55,7 @@ const SCREEN_ONLY = ['Calculate', 'Print sheet', 'Copy link', 'Copy as curl', 'D
 
 // The page's catalogue modules as the browser loads them (ES modules; web/ has no package.json).
 const catalogue = async name => {
-  const source = readFileSync(path.join(repo, 'web', 'ui', `catalogue_${name}.js`), 'utf8');
+  const source = readFileSync(path.join(repo, 'web', 'ui', 'core', `catalogue_${name}.js`), 'utf8');
   return (await import(`data:text/javascript,${encodeURIComponent(source)}`)).default;
 };
 const EN = await catalogue('en');

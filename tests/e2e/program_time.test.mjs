@@ -36,7 +36,7 @@ const MM_PER_INCH = 25.4;
 const VX = '/machine/axes/x/max_velocity_mm_per_min';
 
 const catalogue = async name => {
-  const source = readFileSync(path.join(repo, 'web', 'ui', `catalogue_${name}.js`), 'utf8');
+  const source = readFileSync(path.join(repo, 'web', 'ui', 'core', `catalogue_${name}.js`), 'utf8');
   return (await import(`data:text/javascript,${encodeURIComponent(source)}`)).default;
 };
 const EN = await catalogue('en');
@@ -169,7 +169,7 @@ describe('program time', () => {
       assert.deepEqual(words, answer.slowest_blocks.map(b => EN[`limit.${b.limited_by}`]), 'limited_by in words');
 
       // The program is not in the link (Copy link keeps the control only).
-      const link = await page.evaluate(async () => (await import('/ui/url_state.js')).sectionLink('program-time', document.getElementById('program-time-form')));
+      const link = await page.evaluate(async () => (await import('/ui/core/url_state.js')).sectionLink('program-time', document.getElementById('program-time-form')));
       assert.deepEqual([...new URL(link).searchParams.keys()], ['program-time.dialect'], `the link ${link}`);
       await page.locator('#program-time').screenshot({ path: path.join(ARTIFACT_DIR, 'program-time-1280.png') });
       await assertClean(page, log, 'on open');
@@ -300,7 +300,7 @@ describe('program time', () => {
       assert.equal(new URL(page.url()).searchParams.get('machine.axes.x.max_velocity_mm_per_min'), '2500');
 
       // Copy link of another section carries the profile too; opened, it restores it.
-      const link = await page.evaluate(async () => (await import('/ui/url_state.js')).sectionLink('polygon', document.getElementById('polygon-form')));
+      const link = await page.evaluate(async () => (await import('/ui/core/url_state.js')).sectionLink('polygon', document.getElementById('polygon-form')));
       assert.equal(new URL(link).searchParams.get('machine.axes.x.max_velocity_mm_per_min'), '2500', `the polygon link ${link}`);
       second = await openPage(new URL(page.url()).href);
       await settle(second.log);

@@ -329,7 +329,7 @@ describe('calculator page as a shop tool', () => {
     const { context, page, log } = await openPage(PAGE_URL);
     try {
       const rows = [['a,b', 'say "x"', 'two\r\nlines', 'plain', 1.5, -2e-7]];
-      const text = await page.evaluate(async rows => (await import('/ui/export.js')).csvText(['h1', 'h2', 'h3', 'h4', 'h5', 'h6'], rows), rows);
+      const text = await page.evaluate(async rows => (await import('/ui/core/export.js')).csvText(['h1', 'h2', 'h3', 'h4', 'h5', 'h6'], rows), rows);
       assert.equal(text.split('\r\n')[0], 'h1,h2,h3,h4,h5,h6');
       assert.deepEqual(parseCsv(text), [['h1', 'h2', 'h3', 'h4', 'h5', 'h6'], ['a,b', 'say "x"', 'two\r\nlines', 'plain', '1.5', '-2e-7']]);
       await settle(log);

@@ -166,20 +166,22 @@ TEST(WebPage, EveryAssetThePageReferencesIsServedWithItsType) {
 }
 
 TEST(WebPage, EveryModuleImportResolvesToAServedScript) {
-  // app.js imports the section modules with relative specifiers ('./entry.js'): each must be an
-  // embedded asset, or the page would fail in the browser with nothing to see in a unit test.
-  const std::regex import_from(R"re(\bfrom\s+'\./([A-Za-z0-9_.-]+)')re");
+  // The modules import each other with relative specifiers ('./core/form.js', '../core/i18n.js'):
+  // each, resolved against the importing module's URL as the browser does, must be an embedded
+  // asset, or the page would fail in the browser with nothing to see in a unit test.
+  const std::regex import_from(R"re(\bfrom\s+'(\.\.?/[A-Za-z0-9_./-]+)')re");
   int imports = 0;
   for (const service::WebAsset& asset : service::web_assets()) {
     if (asset.content_type.rfind("text/javascript", 0) != 0) {
       continue;
     }
     const std::string source(asset.bytes);
+    const std::filesystem::path folder = std::filesystem::path(asset.url_path).parent_path();
     for (auto it = std::sregex_iterator(source.begin(), source.end(), import_from);
          it != std::sregex_iterator(); ++it) {
       ++imports;
-      std::string target = "/ui/";  // +=: GCC 12 -O3 warns falsely (-Wrestrict) on "lit" + str
-      target += (*it)[1].str();
+      const std::string target = (folder / (*it)[1].str()).lexically_normal().generic_string();
+      EXPECT_EQ(target.rfind("/ui/", 0), 0U) << asset.file << " imports " << target;
       EXPECT_NE(service::find_web_asset(target), nullptr) << asset.file << " imports " << target;
     }
   }
@@ -221,32 +223,52 @@ TEST(WebPage, EmbeddedBytesEqualTheFilesInWeb) {
   EXPECT_TRUE(res->body == on_disk["ui/app.js"]);
 }
 
-TEST(WebPage, OpenApiListsExactlyTheEmbeddedAssets) {
-  // openapi.yaml documents /ui/{asset}'s parameter (components/parameters/Asset) with an enum of
-  // the file names: it must name every asset under web/ui/ and nothing else, or the contract and
-  // the binary disagree.
-  const std::string yaml(service::embedded_openapi_yaml());
-  const auto path = yaml.find("\n    Asset:\n      name: asset\n");
-  ASSERT_NE(path, std::string::npos) << "openapi.yaml has no Asset parameter";
+// The names of openapi.yaml's path parameter `name` (components/parameters), from its enum.
+std::set<std::string> documented_names(const std::string& yaml, const std::string& parameter,
+                                       const std::string& name) {
+  const auto path = yaml.find("\n    " + parameter + ":\n      name: " + name + "\n");
+  EXPECT_NE(path, std::string::npos) << "openapi.yaml has no " << parameter << " parameter";
+  if (path == std::string::npos) return {};
   const auto open = yaml.find("enum: [", path);
   const auto close = yaml.find(']', open);
-  ASSERT_TRUE(open != std::string::npos && close != std::string::npos);
+  EXPECT_TRUE(open != std::string::npos && close != std::string::npos);
   std::set<std::string> documented;
   std::stringstream list(yaml.substr(open + 7, close - open - 7));
-  for (std::string name; std::getline(list, name, ',');) {
-    name.erase(0, name.find_first_not_of(' '));
-    name.erase(name.find_last_not_of(' ') + 1);
-    documented.insert(name);
+  for (std::string item; std::getline(list, item, ',');) {
+    item.erase(0, item.find_first_not_of(' '));
+    item.erase(item.find_last_not_of(' ') + 1);
+    documented.insert(item);
   }
-  std::set<std::string> embedded;
+  return documented;
+}
+
+TEST(WebPage, OpenApiListsExactlyTheEmbeddedAssets) {
+  // openapi.yaml documents /ui/{asset} and /ui/{folder}/{module} with enums of the names
+  // (components/parameters Asset, Folder, Module): they must name every asset under web/ui/ and
+  // nothing else, or the contract and the binary disagree.
+  const std::string yaml(service::embedded_openapi_yaml());
+  std::set<std::string> top;
+  std::set<std::string> folders;
+  std::set<std::string> modules;
   for (const service::WebAsset& asset : service::web_assets()) {
-    if (asset.url_path.rfind("/ui/", 0) == 0) {
-      embedded.insert(std::string(asset.url_path.substr(4)));
-    } else {
+    if (asset.url_path.rfind("/ui/", 0) != 0) {
       EXPECT_EQ(asset.url_path, "/");
+      continue;
     }
+    const std::string name(asset.url_path.substr(4));
+    const auto slash = name.find('/');
+    if (slash == std::string::npos) {
+      top.insert(name);
+      continue;
+    }
+    EXPECT_EQ(name.find('/', slash + 1), std::string::npos) << name << ": one folder deep only";
+    folders.insert(name.substr(0, slash));
+    EXPECT_TRUE(modules.insert(name.substr(slash + 1)).second)
+        << name << ": a module name is in one folder only";
   }
-  EXPECT_EQ(documented, embedded);
+  EXPECT_EQ(documented_names(yaml, "Asset", "asset"), top);
+  EXPECT_EQ(documented_names(yaml, "Folder", "folder"), folders);
+  EXPECT_EQ(documented_names(yaml, "Module", "module"), modules);
 }
 
 TEST(WebPage, UnknownUiPathIsAProblemJson404) {
@@ -281,11 +303,11 @@ TEST(WebPage, PostAndDeleteAre405WithAllow) {
 
 TEST(WebPage, MetricsLabelThePageByItsFixedRoutes) {
   const auto c = client();
-  ASSERT_TRUE(c->Get("/ui/svg.js"));
+  ASSERT_TRUE(c->Get("/ui/core/svg.js"));
   ASSERT_TRUE(c->Get("/ui/made-up-by-the-client.js"));
   const auto metrics = c->Get("/metrics");
   ASSERT_TRUE(metrics);
-  EXPECT_NE(metrics->body.find(R"(route="/ui/svg.js",method="GET",status="200")"),
+  EXPECT_NE(metrics->body.find(R"(route="/ui/core/svg.js",method="GET",status="200")"),
             std::string::npos);
   EXPECT_EQ(metrics->body.find("made-up-by-the-client"), std::string::npos);
 }

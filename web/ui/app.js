@@ -4,20 +4,20 @@
 // machine profile (machine.js) is edited in the Program time section and times the programs of
 // the other sections too: when it changes, they calculate again.
 
-import * as bore from './bore.js';
-import * as entry from './entry.js';
-import * as flat from './flat.js';
-import * as groove from './groove.js';
-import * as grooving from './grooving.js';
-import { translatePage } from './i18n.js';
-import { wirePageHistory } from './page_history.js';
-import { wirePageSettings } from './page_settings.js';
-import * as polygon from './polygon.js';
-import * as programTime from './program_time.js';
-import { wirePrintSheets } from './print_sheet.js';
-import { wireSectionTools } from './section_tools.js';
-import * as speeds from './speeds.js';
-import { applyUnitsToPage } from './units.js';
+import * as bore from './sections/bore_roughness.js';
+import * as entry from './sections/entry_and_main_time.js';
+import * as flat from './sections/lathe_flat.js';
+import * as groove from './sections/groove_roughness.js';
+import * as grooving from './sections/grooving_cycle.js';
+import { translatePage } from './core/i18n.js';
+import { wirePageHistory } from './core/page_history.js';
+import { wirePageSettings } from './core/page_settings.js';
+import * as polygon from './sections/polygon_hole.js';
+import * as programTime from './sections/program_time.js';
+import { wirePrintSheets } from './core/print_sheet.js';
+import { wireSectionTools } from './core/section_tools.js';
+import * as speeds from './sections/resultant_speeds.js';
+import { applyUnitsToPage } from './core/units.js';
 
 translatePage();
 applyUnitsToPage();

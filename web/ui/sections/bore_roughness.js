@@ -2,14 +2,14 @@
 // the largest feed; the plot of the cusp against the feed comes from the same request
 // (curve_points).
 
-import { boreDiagrams } from './bore_diagram.js';
-import { feedCurvePlot } from './feed_curve.js';
-import { onCalculate } from './calculation.js';
-import { csvButton } from './export.js';
-import { at, h, iso, noDiagram, readBody, showFailure, sym, valueList } from './form.js';
-import { t } from './i18n.js';
-import { s } from './svg.js';
-import { csvUnit, fromApi, unitText } from './units.js';
+import { boreDiagrams } from '../diagrams/bore_roughness_diagram.js';
+import { feedCurvePlot } from '../diagrams/feed_curve.js';
+import { onCalculate } from '../core/calculation.js';
+import { csvButton } from '../core/export.js';
+import { at, h, iso, noDiagram, readBody, showFailure, sym, valueList } from '../core/form.js';
+import { t } from '../core/i18n.js';
+import { s } from '../core/svg.js';
+import { csvUnit, fromApi, unitText } from '../core/units.js';
 
 const PATH = '/v1/roughness/bore-milling';
 const CURVE_POINTS = 200;

@@ -2,19 +2,19 @@
 // part frame (the part, its m flats, the tool at a few steps of the final layer of flat 1) and the
 // path between two step points magnified, with the flatness error (F10-F14) labelled.
 
-import { fmt, h, noDiagram } from './form.js';
-import { t } from './i18n.js';
+import { fmt, lengthText, noDiagram } from '../core/form.js';
+import { t } from '../core/i18n.js';
 import {
   Bounds,
   diagram,
+  diagramRow,
   figure,
   horizontalDimension,
   points,
   s,
   unitsPerPixel,
   verticalDimension,
-} from './svg.js';
-import { fromApi, unitText } from './units.js';
+} from '../core/svg.js';
 
 const DEG = Math.PI / 180;
 // Tool positions drawn: about this many, evenly over the step table (first and last included).
@@ -22,17 +22,10 @@ const SHOWN_TOOLS = 5;
 // Points per segment for the spiral (F10) and its offset (F12).
 const SAMPLES = 64;
 
-// A length of the API (mm) as the page shows it: its number in the page's units and the unit.
-const length = (mm) => `${fmt(fromApi(mm, 'mm'))} ${unitText('mm')}`;
 
 // Both views side by side where there is room (print), else one under the other.
 export function flatDiagrams(inputs, answer, container) {
-  return h(
-    'div',
-    { class: 'diagram-row' },
-    sectionView(inputs, answer, container),
-    spiralView(inputs, answer),
-  );
+  return diagramRow(sectionView(inputs, answer, container), spiralView(inputs, answer));
 }
 
 // The tool reference point at block parameter u in [0, 1] of segment i of the step table, in the
@@ -146,7 +139,7 @@ function sectionView({ partDiameter: D, toolRadius: R, flats: m }, answer, conta
       x2: d,
       y: 0.55 * R2,
       from2: halfWidth,
-      text: t('diagram.flat_axis_distance', { value: length(d) }),
+      text: t('diagram.flat_axis_distance', { value: lengthText(d) }),
       arrow,
     }),
     verticalDimension({
@@ -154,13 +147,13 @@ function sectionView({ partDiameter: D, toolRadius: R, flats: m }, answer, conta
       x: d - 0.25 * (R2 - d) - 0.04 * D,
       y1: -halfWidth,
       y2: halfWidth,
-      text: t('diagram.flat_width', { value: length(2 * halfWidth) }),
+      text: t('diagram.flat_width', { value: lengthText(2 * halfWidth) }),
       arrow,
     }),
     s(
       'text',
       { 'data-role': 'part-diameter', x: -R2 * 0.7, y: -R2 * 0.75, 'text-anchor': 'end' },
-      t('diagram.flat_part_diameter', { value: length(D) }),
+      t('diagram.flat_part_diameter', { value: lengthText(D) }),
     ),
   );
   // Text on a dimension drawn inside the flat's own line reads better left of it.
@@ -263,7 +256,7 @@ function spiralView({ partDiameter: D, toolRadius: R }, answer) {
     t('diagram.flat_spiral_caption', {
       from: rows[i].i,
       to: rows[i + 1].i,
-      chord: length(rows[i].chord_mm),
+      chord: lengthText(rows[i].chord_mm),
     }),
   );
 }

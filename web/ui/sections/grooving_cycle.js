@@ -2,24 +2,11 @@
 // cycle, the wall roughness and chip, the diagrams of the groove and of the shift pattern, and the
 // lathe program with its download.
 
-import { onCalculate } from './calculation.js';
-import {
-  hideProgram,
-  showProgram,
-  wireProgramDownload,
-  h,
-  iso,
-  readBody,
-  showFailure,
-  sym,
-  value,
-  valueList,
-  warningList,
-  wireContourFields,
-} from './form.js';
-import { groovingDiagrams } from './grooving_diagram.js';
-import { t, tn } from './i18n.js';
-import { machineTimeLine, markTimed, postWithMachine } from './machine.js';
+import { h, iso, sym, value, valueList, warningList, wireContourFields } from '../core/form.js';
+import { groovingDiagrams } from '../diagrams/grooving_cycle_diagram.js';
+import { programSection, programSource } from '../core/program_section.js';
+import { t, tn } from '../core/i18n.js';
+import { machineTimeLine } from '../core/machine.js';
 
 const PATH = '/v1/grooving/cycle';
 
@@ -28,49 +15,29 @@ const describeSide = (code) => t(`grooving.side.${code}`);
 const describeBranch = (code) => t(`branch.${code}`);
 
 export function init() {
-  const form = document.getElementById('grooving-form');
-  const result = document.getElementById('grooving-result');
-  const download = document.getElementById('grooving-download');
-  // The program's <pre> is part of the page from the start (hidden until there is a program).
-  const program = document.getElementById('grooving-program');
-  let calculated = null; // the body of the last successful calculation
-  form.dataset.machine = 'lathe'; // timed on the page's machine profile when it is a lathe
-  wireContourFields(form);
-
-  const calculator = onCalculate(form, async (api) => {
-    const body = readBody(form);
-    const { answer, sent, note } = await postWithMachine(api, PATH, body, 'lathe', ['x', 'z']);
-    markTimed(form, sent);
-    result.replaceChildren();
-    if (!answer.ok) {
-      calculated = null;
-      download.disabled = true;
-      showFailure(form, answer);
-      hideProgram(program);
-      result.append(h('p', { class: 'placeholder' }, t('result.no_results')), program);
-      return;
-    }
-    calculated = sent;
-    download.disabled = false;
-    showProgram(program, answer.json);
-    result.append(
-      ...cycleResults(answer.json, note),
+  wireContourFields(document.getElementById('grooving-form'));
+  return programSection({
+    id: 'grooving',
+    path: PATH,
+    machine: 'lathe',
+    axes: () => ['x', 'z'],
+    fileName: 'CUTCALC.ngc',
+    results: (json, { body, note, result, program }) => [
+      ...cycleResults(json, note),
       groovingDiagrams(
         {
           grooveWidth: Number(body.groove_width_mm?.text),
           startDiameter: Number(body.start_diameter_mm?.text),
           leftZ: Number(body.groove_left_z_mm?.text),
         },
-        answer.json,
+        json,
         result,
       ),
-      ...programResults(answer.json),
+      h('h3', {}, t('result.g_code')),
+      programSource(json, PATH, 'result.grooving_program_from'),
       program,
-    );
+    ],
   });
-
-  wireProgramDownload(download, form, PATH, () => calculated, 'CUTCALC.ngc');
-  return calculator;
 }
 
 // Spec section 3.7, in the order a setter reads them: the cycle, its times, the wall and chip.
@@ -138,23 +105,5 @@ function cycleResults(body, machineNote) {
     ),
     h('p', { class: 'source-note' }, tn('result.grooving_rz_note')),
     warningList(body),
-  ];
-}
-
-// The program's origin and form (the text itself is in the <pre> after it).
-function programResults(body) {
-  return [
-    h('h3', {}, t('result.g_code')),
-    h(
-      'p',
-      { class: 'source-note' },
-      t('result.grooving_program_from', {
-        path: PATH,
-        dialect: body.dialect,
-        units: t(`program_units.${body.units}`),
-        decimals: body.decimals,
-        file: body.file_name,
-      }),
-    ),
   ];
 }

@@ -325,13 +325,6 @@ export default {
   'not_modelled.spindle_and_coolant_start': 'spindle and coolant start',
   'not_modelled.first_positioning_move': 'first positioning move',
   'not_modelled.non_linear_rapids': 'non-linear rapids',
-  // A program's warnings (the API's codes; its detail is English only)
-  'warning.spindle_over_limit': 'The spindle speed is above the machine’s limit (max_spindle_rpm).',
-  'warning.feed_over_limit': 'A programmed feed is above the machine’s limit (max_feed_mm_per_min).',
-  'warning.spindle_speed_rounded': 'The spindle speed is rounded: a Fanuc S word takes no decimals.',
-  'warning.rounding_exceeds_tolerance': 'The program as printed deviates from the exact path by more than the arc-fit tolerance: print more decimals.',
-  'warning.feed_exceeds_block_rate': 'The programmed feed is above the block-rate feed limit: the control will starve.',
-  'warning.phase_not_locked': 'G95 does not lock the rotor angle to the path: start with corner 0 pointing −Y.',
   // Diagrams: titles, axes, captions
   'diagram.feed': 'feed',
   'diagram.entry_scheme_title': 'Entry scheme to scale: workpiece, contour, steady band and the cutter at start, first contact and saturation',
@@ -356,7 +349,7 @@ export default {
   'diagram.rotor_flank_radius': 'R{m} = {value}',
   'diagram.rotor_corner_angle': 'corner {value} {unit}',
   'diagram.rotor_caption': 'Rotor frame: tool axis at the centre, corner 0 pointing −Y (the pose at the loop start), Y up.',
-  // The bore milling diagrams (bore_diagram.js)
+  // The bore milling diagrams (diagrams/bore_roughness_diagram.js)
   'diagram.bore_title': 'Bore R = {bore} {unit}, cutter r = {cutter} {unit} at the contacts of two successive teeth',
   'diagram.bore_description': 'Bore, centre path and cutter to scale; the cutter is drawn at the contacts of two successive teeth.',
   'diagram.drawn_larger': '(drawn larger)',
@@ -386,7 +379,7 @@ export default {
   'error.network': 'network error',
   'error.unreachable': 'the service could not be reached ({reason})',
   'error.download_failed': 'Download failed: {reason}',
-  // The grooving cycle "v razvod" (grooving.js, grooving_diagram.js)
+  // The grooving cycle "v razvod" (sections/grooving_cycle.js, diagrams/grooving_cycle_diagram.js)
   'section.grooving_cycle': 'Grooving cycle',
   'about.grooving_cycle': 'The narrow-groove cycle "v razvod": a grooving tool narrower than the groove by X_{2} plunges at S_{0} per revolution and moves by X_{2} axially, alternately, in every other revolution; a final shift at the bottom gives the groove its width. The revolutions, times, wall roughness and the lathe program (paper 003).',
   'legend.groove': 'Groove',
@@ -460,9 +453,6 @@ export default {
   'result.grooving_program_from': 'From {path}: {dialect}, {units}, {decimals} decimals, file {file}. X is the diameter.',
   'grooving.side.left': 'left',
   'grooving.side.right': 'right',
-  'warning.spindle_speed_limited': 'Constant surface speed reaches the spindle limit above the bottom: the speed is clamped there.',
-  'warning.shift_outside_paper_range': 'The axial shift X_{2} is outside the paper\'s tested 0.3–0.5 mm.',
-  'warning.pattern_not_repeated': 'Fewer than 5 revolutions: the pattern does not repeat, so the wall pitch and Rz are those of the developed pattern.',
   'legend.groove_contour': 'groove',
   'legend.tool_at_start': 'tool at the start',
   'legend.tool_after_final_shift': 'tool after the final shift',
@@ -471,12 +461,6 @@ export default {
   'legend.final_shift': 'dwell and final shift at the bottom',
   'diagram.grooving_section_title': 'The groove to scale as a half-section, with the tool at its start and after the final shift',
   'diagram.grooving_section_caption': 'To scale: Z to the right, radius up; the tool\'s reference point is its left corner, at X = D_{a}, Z = z_{L} at the start.',
-  'diagram.grooving_width': 'W = {value}',
-  'diagram.grooving_tool_width': 'B = {value}',
-  'diagram.grooving_shift': 'X_{2} = {value}',
-  'diagram.grooving_depth': 'h = {value}',
-  'diagram.grooving_start_diameter': 'D_{0} = {value}',
-  'diagram.grooving_bottom_diameter': 'D_{b} = {value}',
   'diagram.grooving_start_point': 'start X = {value}',
   'diagram.grooving_pattern_title': 'The shift pattern: the tool\'s Z in each revolution of the plunge, and the final shift at the bottom',
   'diagram.grooving_at_left': 'Z = z_{L}',
@@ -485,7 +469,7 @@ export default {
   'diagram.grooving_revolution': 'rev. {k}',
   'diagram.grooving_final_shift': 'final shift {value} in {revolutions} rev',
   'diagram.grooving_pattern_caption': 'Schematic (not to scale): a row per spindle revolution, {infeed} deeper each; the depth on the right. A tool corner meets each wall every 4 revolutions: wall pitch {pitch}. Shift {shift}.',
-  // A flat milled on a lathe by C-axis steps (flat.js, flat_diagram.js)
+  // A flat milled on a lathe by C-axis steps (sections/lathe_flat.js, diagrams/lathe_flat_diagram.js)
   'section.lathe_flat': 'Flat on a lathe',
   'about.lathe_flat': 'A flat (a wrench flat or the faces of a polygon) milled on a lathe with a driven end mill and no polar interpolation: the spindle turns as a C axis in N equal steps per half-flat while X follows. Between steps the tool runs on an Archimedean spiral and leaves a small hump: the flatness error. The geometry, step table, flatness error (or the N a tolerance needs), layers, block-rate limit, time and a G93 inverse-time program (paper 000, Figs. 12–13).',
   'legend.part_and_flats': 'Part and flats',
@@ -546,7 +530,6 @@ export default {
   'result.flat_radius': '(radius)',
   'result.flat_chord': 'Chord',
   'result.flat_program_from': 'From {path}: {dialect}, {units}, {decimals} decimals, file {file}. X is the diameter, C in degrees, G93 inverse-time feed on every C block.',
-  'warning.flatness_over_tolerance': 'The flatness error of the given N is above the tolerance.',
   'legend.flat_stock': 'part before milling',
   'legend.flat_finished': 'finished cross-section',
   'legend.flat_tool': 'tool at a step',
@@ -640,11 +623,6 @@ export default {
   'limit.arc': 'the speed limit on the arc',
   'limit.segment_length': 'one segment per servo period',
   'limit.blend': 'a corner or blend',
-  // A program's machine time warnings (the API's codes)
-  'warning.axis_caps_feed': 'Some blocks ask for a feed above what the axes (or the trajectory maximum) allow along them: they run slower.',
-  'warning.segment_too_short': 'Some segments are too short for their feed at one segment per servo period: they run slower.',
-  'warning.untimed_stop': 'The program stops for the operator or a tool change (M0, M1, M6): these stops are not in the time.',
-  'warning.units_assumed': 'The program states no units (G20 or G21): it is read in mm.',
   // The other program sections timed on the machine profile (machine.js)
   'result.on_this_machine': 'On this machine',
   'result.nominal_short': 'nominal',

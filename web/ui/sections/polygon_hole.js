@@ -2,21 +2,7 @@
 // the rotor dimensioned for grinding it, the machining time, and the program as a .ngc download
 // (the same request with Accept: text/plain).
 
-import { onCalculate } from './calculation.js';
-import {
-  fmt,
-  h,
-  noDiagram,
-  readBody,
-  hideProgram,
-  showProgram,
-  wireProgramDownload,
-  showFailure,
-  sym,
-  value,
-  valueList,
-  warningList,
-} from './form.js';
+import { fmt, h, noDiagram, sym, value, valueList, warningList } from '../core/form.js';
 import {
   Bounds,
   diagram,
@@ -26,58 +12,37 @@ import {
   points,
   s,
   unitsPerPixel,
-} from './svg.js';
-import { t } from './i18n.js';
-import { machineTimeLine, markTimed, postWithMachine } from './machine.js';
-import { fromApi, unitText } from './units.js';
+} from '../core/svg.js';
+import { programSection } from '../core/program_section.js';
+import { t } from '../core/i18n.js';
+import { machineTimeLine } from '../core/machine.js';
+import { fromApi, unitText } from '../core/units.js';
 
 const PATH = '/v1/polygon-hole/gcode';
 
 export function init() {
-  const form = document.getElementById('polygon-form');
-  const result = document.getElementById('polygon-result');
-  const download = document.getElementById('polygon-download');
-  // The program's <pre> is part of the page from the start (hidden until there is a program).
-  const program = document.getElementById('polygon-program');
-  let calculated = null; // the body of the last successful calculation
-  form.dataset.machine = 'mill'; // timed on the page's machine profile when it is a mill
-
-  const calculator = onCalculate(form, async (api) => {
-    const body = withoutDefaultProgram(readBody(form));
-    const { answer, sent, note } = await postWithMachine(
-      api,
-      PATH,
-      { ...body, include_geometry: true },
-      'mill',
-      body.synchronization === 'c_axis' ? ['x', 'y', 'z', 'c'] : ['x', 'y', 'z'],
-    );
-    markTimed(form, sent);
-    result.replaceChildren();
-    if (!answer.ok) {
-      calculated = null;
-      download.disabled = true;
-      showFailure(form, answer);
-      hideProgram(program);
-      result.append(
-        h('p', { class: 'placeholder' }, t('result.no_results')),
-        program,
-      );
-      return;
-    }
+  return programSection({
+    id: 'polygon',
+    path: PATH,
+    machine: 'mill',
+    axes: (body) => (body.synchronization === 'c_axis' ? ['x', 'y', 'z', 'c'] : ['x', 'y', 'z']),
+    fileName: 'polygon-hole.ngc',
+    request: (body) => ({ ...withoutDefaultProgram(body), include_geometry: true }),
     // The download asks for the same program (and machine time) without the geometry.
-    calculated = { ...sent };
-    delete calculated.include_geometry;
-    download.disabled = false;
-    showProgram(program, answer.json);
-    result.append(...programResults(answer, result, note), h('h3', {}, t('result.g_code')), program);
+    downloaded: (sent) => {
+      const request = { ...sent };
+      delete request.include_geometry;
+      return request;
+    },
+    results: (json, { note, result, program }) => [
+      ...programResults(json, result, note),
+      h('h3', {}, t('result.g_code')),
+      program,
+    ],
   });
-
-  wireProgramDownload(download, form, PATH, () => calculated, 'polygon-hole.ngc');
-  return calculator;
 }
 
-function programResults(answer, container, machineNote) {
-  const body = answer.json;
+function programResults(body, container, machineNote) {
   const parts = [
     h('h3', {}, t('result.program_and_hole')),
     valueList(body, [

@@ -1,9 +1,8 @@
 // Forms: request bodies from the inputs (each input's name is its JSON Pointer), the service's
 // problem messages next to the fields, and the result elements (data-result / data-value).
 
-import { fileNameOf, numberLiteral, postJson, RawNumber } from './api.js';
-import { saveFile } from './export.js';
-import { has, t } from './i18n.js';
+import { numberLiteral, RawNumber } from './api.js';
+import { t } from './i18n.js';
 import { converts, fromApi, inputUnit, shownUnit, toApi, unitText } from './units.js';
 
 // Element builder: h('p', {class: 'x', 'data-a': 1}, 'text', child, ...). Attributes only: no
@@ -196,6 +195,9 @@ export function showMessage(form, message) {
 
 // ------------------------------------------------------------------ results
 
+// A length of the API (mm) as the page shows it: its number in the page's units and the unit.
+export const lengthText = (mm) => `${fmt(fromApi(mm, 'mm'))} ${unitText('mm')}`;
+
 // A number for people: at most 4 decimals (trailing zeros dropped), 4 significant digits for
 // very small or very large magnitudes.
 export function fmt(value) {
@@ -249,13 +251,13 @@ export function value(
     : num;
 }
 
-// A program's warnings: each code (data-result) with its sentence in the page's language. The
-// API's own detail is English whatever the language (a 200 answer is the same in every
-// language): it is shown only for a code the catalogue does not know yet.
+// A program's warnings: each code (data-result) with the API's sentence for it, in the language
+// the page asked for (Accept-Language); the API keeps the one catalogue of warnings. Its detail,
+// English with the numbers, is the program's comment line: shown only when there is no message.
 export function warningList(body) {
   const warnings = Array.isArray(body.warnings) ? body.warnings : [];
   if (!warnings.length) return [];
-  const sentence = (w) => (has(`warning.${w.code}`) ? t(`warning.${w.code}`) : w.detail);
+  const sentence = (w) => w.message ?? w.detail;
   return h(
     'ul',
     { class: 'warnings' },
@@ -290,47 +292,4 @@ export function iso(base, sub = '') {
 
 export function noDiagram(what) {
   return h('p', { class: 'no-diagram' }, t('result.no_diagram', { what }));
-}
-
-// Asks `path` for the plain-text program of `body` (Accept: text/plain) and saves it under the
-// file name the service gives (Content-Disposition), or `fallback`. Failures are shown on `form`.
-export async function downloadProgram(form, path, body, fallback) {
-  try {
-    const answer = await postJson(path, body, 'text/plain');
-    if (!answer.ok) {
-      showFailure(form, answer, t('result.download'));
-      return;
-    }
-    const name = fileNameOf(answer.headers.get('Content-Disposition'), fallback);
-    saveFile(name, answer.text, 'text/plain');
-  } catch (error) {
-    showMessage(form, t('error.download_failed', { reason: error?.message ?? error }));
-  }
-}
-
-// A section's program <pre>: the answer's program under its file name, or empty and hidden.
-export function showProgram(pre, answerJson) {
-  pre.textContent = answerJson.program;
-  pre.dataset.fileName = answerJson.file_name;
-  pre.hidden = false;
-}
-export function hideProgram(pre) {
-  pre.textContent = '';
-  delete pre.dataset.fileName;
-  pre.hidden = true;
-}
-
-// A "Download program" button: a click downloads the program of the request `currentBody()`
-// returns (nothing while there is none), the button disabled while it is fetched.
-export function wireProgramDownload(button, form, path, currentBody, fallback) {
-  button.addEventListener('click', async () => {
-    const body = currentBody();
-    if (!body) return;
-    button.disabled = true;
-    try {
-      await downloadProgram(form, path, body, fallback);
-    } finally {
-      button.disabled = currentBody() === null;
-    }
-  });
 }

@@ -24,9 +24,6 @@ function raw(key, params = {}) {
   return text.replace(/\{(\w+)\}/g, (m, name) => (name in params ? String(params[name]) : m));
 }
 
-// Whether the catalogue has `key` (for texts named by the API's codes).
-export const has = (key) => Object.hasOwn(CATALOGUES[language], key);
-
 // The text of `key` as a plain string (a subscript written inline: S_{0} -> S0).
 export function t(key, params) {
   return raw(key, params).replace(/_\{([^}]*)\}/g, '$1');

@@ -2,24 +2,23 @@
 // POST /v1/entry-length (one pass, with its scheme for the drawings) and POST /v1/main-time
 // (every lateral and depth pass).
 
-import { RawNumber } from './api.js';
-import { onCalculate } from './calculation.js';
-import { csvButton } from './export.js';
+import { RawNumber } from '../core/api.js';
+import { onCalculate } from '../core/calculation.js';
+import { csvButton } from '../core/export.js';
 import {
   at,
   h,
+  iso,
+  lengthText,
   noDiagram,
   readBody,
-  wireProgramDownload,
   showFailure,
-  iso,
   sym,
   value,
   valueList,
   warningList,
   wireContourFields,
-  fmt,
-} from './form.js';
+} from '../core/form.js';
 import {
   arrowHead,
   Bounds,
@@ -29,14 +28,15 @@ import {
   mapped,
   points,
   s,
+  subText,
   unitsPerPixel,
-} from './svg.js';
-import { t, tn } from './i18n.js';
-import { machineTimeLine, markTimed, postWithMachine } from './machine.js';
-import { csvUnit, fromApi, unitText } from './units.js';
+} from '../core/svg.js';
+import { programSource, wireProgramDownload } from '../core/program_section.js';
+import { t, tn } from '../core/i18n.js';
+import { machineTimeLine, markTimed, postWithMachine } from '../core/machine.js';
+import { csvUnit, unitText } from '../core/units.js';
 
 // " = 12.5 mm" for a dimension line: the length in the page's units.
-const lengthText = (mm) => ` = ${fmt(fromApi(mm, 'mm'))} ${unitText('mm')}`;
 
 const LENGTH = 'entry-length';
 const TIME = 'main-time';
@@ -92,16 +92,7 @@ export function init() {
 function programResults(body, machineNote) {
   return [
     h('h3', {}, t('result.program')),
-    h(
-      'p',
-      { class: 'source-note' },
-      t('result.program_from', {
-        path: PROGRAM_PATH,
-        dialect: body.dialect,
-        units: t(`program_units.${body.units}`),
-        file: body.file_name,
-      }),
-    ),
+    programSource(body, PROGRAM_PATH, 'result.program_from'),
     valueList(
       body,
       [
@@ -170,14 +161,6 @@ function lengthResults(answer, container) {
 // Frame coordinates (X against the feed, Y lateral) to screen: the feed runs left to right and
 // Y points up, so screen = (-X, -Y) (a half turn, no mirror).
 const toScreen = (x, y) => [-x, -y];
-
-function subText(base, sub, rest) {
-  return [
-    base,
-    s('tspan', { 'baseline-shift': 'sub', 'font-size': '0.75em' }, sub),
-    s('tspan', {}, rest),
-  ];
-}
 
 function positionsByName(frame) {
   const byName = {};
@@ -338,7 +321,7 @@ function entryScheme(scheme, body, container) {
         y: topRow,
         from1: y1,
         from2: y2,
-        text: subText('L', 'vr', lengthText(body.entry_length_mm)),
+        text: subText('L', 'vr', ` = ${lengthText(body.entry_length_mm)}`),
         arrow: 8 * upp,
       }),
     );
@@ -350,7 +333,7 @@ function entryScheme(scheme, body, container) {
         y: bottomRow,
         from1: 0,
         from2: y1,
-        text: subText('X', 'n', lengthText(start.x_mm)),
+        text: subText('X', 'n', ` = ${lengthText(start.x_mm)}`),
         arrow: 8 * upp,
       }),
     );
@@ -392,7 +375,7 @@ function exitScheme(scheme, body, container) {
         y: bottomRow,
         from1: 0,
         from2: y1,
-        text: subText('X', 'k', lengthText(end.x_mm)),
+        text: subText('X', 'k', ` = ${lengthText(end.x_mm)}`),
         arrow: 8 * upp,
       }),
     );

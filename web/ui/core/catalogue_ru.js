@@ -324,13 +324,6 @@ export default {
   'not_modelled.spindle_and_coolant_start': 'пуск шпинделя и СОЖ',
   'not_modelled.first_positioning_move': 'первое позиционирование',
   'not_modelled.non_linear_rapids': 'нелинейные ускоренные перемещения',
-  // A program's warnings (the API's codes; its detail is English only)
-  'warning.spindle_over_limit': 'Частота вращения шпинделя выше предела станка (max_spindle_rpm).',
-  'warning.feed_over_limit': 'Запрограммированная подача выше предела станка (max_feed_mm_per_min).',
-  'warning.spindle_speed_rounded': 'Частота вращения округлена: слово S в Fanuc не допускает дробной части.',
-  'warning.rounding_exceeds_tolerance': 'Программа в напечатанном виде отклоняется от точной траектории больше допуска аппроксимации: выводите больше знаков.',
-  'warning.feed_exceeds_block_rate': 'Запрограммированная подача выше предела по скорости обработки кадров: ЧПУ не успеет читать кадры.',
-  'warning.phase_not_locked': 'G95 не привязывает угол ротора к траектории: начинайте с угла 0, направленного в −Y.',
   // Diagrams: titles, axes, captions
   'diagram.feed': 'подача',
   'diagram.entry_scheme_title': 'Схема входа в масштабе: заготовка, контур, полоса установившегося резания и фреза в начале, при первом контакте и при насыщении',
@@ -355,7 +348,7 @@ export default {
   'diagram.rotor_flank_radius': 'R{m} = {value}',
   'diagram.rotor_corner_angle': 'вершина {value} {unit}',
   'diagram.rotor_caption': 'Система координат ротора: ось инструмента в центре, вершина 0 направлена к −Y (положение в начале петли), Y вверх.',
-  // The bore milling diagrams (bore_diagram.js)
+  // The bore milling diagrams (diagrams/bore_roughness_diagram.js)
   'diagram.bore_title': 'Отверстие R = {bore} {unit}, фреза r = {cutter} {unit} в точках контакта двух соседних зубьев',
   'diagram.bore_description': 'Отверстие, траектория центра и фреза в масштабе; фреза показана в точках контакта двух соседних зубьев с отверстием.',
   'diagram.drawn_larger': '(показан увеличенным)',
@@ -385,7 +378,7 @@ export default {
   'error.network': 'ошибка сети',
   'error.unreachable': 'сервис недоступен ({reason})',
   'error.download_failed': 'Не удалось скачать: {reason}',
-  // The grooving cycle "v razvod" (grooving.js, grooving_diagram.js)
+  // The grooving cycle "v razvod" (sections/grooving_cycle.js, diagrams/grooving_cycle_diagram.js)
   'section.grooving_cycle': 'Цикл прорезки канавки',
   'about.grooving_cycle': 'Цикл прорезки узкой канавки «вразвод»: резец уже канавки на X_{2} врезается с подачей S_{0} на оборот и через оборот смещается вдоль оси на X_{2}, попеременно в обе стороны; окончательное смещение на дне даёт канавке её ширину. Обороты, время, шероховатость стенок и программа для токарного станка (статья 003).',
   'legend.groove': 'Канавка',
@@ -459,9 +452,6 @@ export default {
   'result.grooving_program_from': 'Из {path}: {dialect}, {units}, знаков после запятой {decimals}, файл {file}. X — диаметр.',
   'grooving.side.left': 'слева',
   'grooving.side.right': 'справа',
-  'warning.spindle_speed_limited': 'Постоянная скорость резания доходит до предела частоты вращения выше дна: там частота ограничена.',
-  'warning.shift_outside_paper_range': 'Осевое смещение X_{2} вне проверенного в статье диапазона 0,3–0,5 мм.',
-  'warning.pattern_not_repeated': 'Меньше 5 оборотов: схема не повторяется, шаг и Rz стенки — для установившейся схемы.',
   'legend.groove_contour': 'канавка',
   'legend.tool_at_start': 'резец в начале',
   'legend.tool_after_final_shift': 'резец после окончательного смещения',
@@ -470,12 +460,6 @@ export default {
   'legend.final_shift': 'выдержка и окончательное смещение на дне',
   'diagram.grooving_section_title': 'Канавка в масштабе (полуразрез), резец в начале и после окончательного смещения',
   'diagram.grooving_section_caption': 'В масштабе: Z вправо, радиус вверх; точка привязки резца — его левая вершина, в начале X = D_{a}, Z = z_{L}.',
-  'diagram.grooving_width': 'W = {value}',
-  'diagram.grooving_tool_width': 'B = {value}',
-  'diagram.grooving_shift': 'X_{2} = {value}',
-  'diagram.grooving_depth': 'h = {value}',
-  'diagram.grooving_start_diameter': 'D_{0} = {value}',
-  'diagram.grooving_bottom_diameter': 'D_{b} = {value}',
   'diagram.grooving_start_point': 'начало X = {value}',
   'diagram.grooving_pattern_title': 'Схема смещений: положение резца по Z в каждом обороте врезания и окончательное смещение на дне',
   'diagram.grooving_at_left': 'Z = z_{L}',
@@ -484,7 +468,7 @@ export default {
   'diagram.grooving_revolution': 'об. {k}',
   'diagram.grooving_final_shift': 'окончательное смещение {value} за {revolutions} об',
   'diagram.grooving_pattern_caption': 'Схема (не в масштабе): строка на каждый оборот шпинделя, каждый глубже на {infeed}; глубина справа. Вершина резца касается каждой стенки раз в 4 оборота: шаг на стенке {pitch}. Смещение {shift}.',
-  // Лыска на токарном станке шагами C (flat.js, flat_diagram.js)
+  // Лыска на токарном станке шагами C (sections/lathe_flat.js, diagrams/lathe_flat_diagram.js)
   'section.lathe_flat': 'Лыска на токарном станке',
   'about.lathe_flat': 'Лыска (под ключ или грани многогранника), фрезеруемая на токарном станке приводной концевой фрезой без полярной интерполяции: шпиндель поворачивается как ось C на N равных шагов на половину лыски, а X следует за ним. Между шагами инструмент идёт по спирали Архимеда и оставляет небольшой гребень — отклонение от плоскостности. Геометрия, таблица шагов, отклонение от плоскостности (или N для допуска), слои, предел по скорости обработки кадров, время и программа с обратной подачей G93 (статья 000, рис. 12–13).',
   'legend.part_and_flats': 'Деталь и лыски',
@@ -545,7 +529,6 @@ export default {
   'result.flat_radius': '(радиус)',
   'result.flat_chord': 'Хорда',
   'result.flat_program_from': 'Из {path}: {dialect}, {units}, знаков после запятой: {decimals}, файл {file}. X — диаметр, C в градусах, обратная подача G93 в каждом кадре с C.',
-  'warning.flatness_over_tolerance': 'Отклонение от плоскостности при заданном N больше допуска.',
   'legend.flat_stock': 'деталь до фрезерования',
   'legend.flat_finished': 'готовое сечение',
   'legend.flat_tool': 'инструмент в точке шага',
@@ -640,10 +623,6 @@ export default {
   'limit.segment_length': 'один отрезок за период сервоцикла',
   'limit.blend': 'угол или скругление',
   // Предупреждения о времени на станке (коды API)
-  'warning.axis_caps_feed': 'Некоторые кадры задают подачу выше, чем позволяют оси (или предел траектории) в их направлении: они выполняются медленнее.',
-  'warning.segment_too_short': 'Некоторые отрезки слишком коротки для своей подачи при одном отрезке за период сервоцикла: они выполняются медленнее.',
-  'warning.untimed_stop': 'Программа останавливается для оператора или смены инструмента (M0, M1, M6): эти остановки во время не входят.',
-  'warning.units_assumed': 'Программа не задаёт единицы (G20 или G21): она прочитана в миллиметрах.',
   // Другие разделы с программами, рассчитанные по профилю станка (machine.js)
   'result.on_this_machine': 'На этом станке',
   'result.nominal_short': 'номинально',

@@ -7,6 +7,20 @@ import { h } from './form.js';
 
 const NS = 'http://www.w3.org/2000/svg';
 
+// Diagrams side by side where there is room (print), else one under the other.
+export function diagramRow(...views) {
+  return h('div', { class: 'diagram-row' }, ...views);
+}
+
+// SVG text with a subscript: subText('X', 'n', ' = 5 mm') reads X with subscript n, then ' = 5 mm'.
+export function subText(base, sub, rest = '') {
+  return [
+    base,
+    s('tspan', { 'baseline-shift': 'sub', 'font-size': '0.75em' }, sub),
+    s('tspan', {}, rest),
+  ];
+}
+
 export function s(tag, attrs = {}, ...children) {
   const element = document.createElementNS(NS, tag);
   for (const [name, value] of Object.entries(attrs)) {

@@ -2,10 +2,10 @@
 // answer's curve, the requested feed marked and, with a target, the target line and the largest
 // feed. The feed axis reads in the page's units; the height stays in micrometres.
 
-import { fmt } from './form.js';
-import { t } from './i18n.js';
-import { domain, figure, plot, points, s } from './svg.js';
-import { unitText } from './units.js';
+import { fmt } from '../core/form.js';
+import { t } from '../core/i18n.js';
+import { domain, figure, plot, points, s } from '../core/svg.js';
+import { unitText } from '../core/units.js';
 
 // `curve`: [feed, height] pairs and `feed` in the page's units (`feedUnit`); `height` the answer at
 // `feed`; `target`: {height, maxFeed} (maxFeed in the page's units) or null.

@@ -2,35 +2,30 @@
 // with the tool at its start and after the final shift, and the shift pattern of the first
 // revolutions (K10-K12) with the final shift at the bottom (K14) as a schematic strip.
 
-import { fmt, h, noDiagram } from './form.js';
-import { t } from './i18n.js';
+import { fmt, h, lengthText, noDiagram } from '../core/form.js';
+import { t } from '../core/i18n.js';
 import {
   arrowHead,
   Bounds,
   diagram,
+  diagramRow,
   figure,
   horizontalDimension,
   points,
   s,
   unitsPerPixel,
   verticalDimension,
-} from './svg.js';
-import { fromApi, unitText } from './units.js';
+} from '../core/svg.js';
 
 // Revolutions the pattern strip shows before it skips to the bottom: two periods of the pattern.
 const SHOWN_REVOLUTIONS = 8;
 
-// A length of the API (mm) as the page shows it: its number in the page's units and the unit.
-const length = (mm) => `${fmt(fromApi(mm, 'mm'))} ${unitText('mm')}`;
+// A dimension's label: the paper's symbol (not a word: the same in every language) and its length.
+const dimensionText = (symbol, mm) => `${symbol} = ${lengthText(mm)}`;
 
 // Both views side by side where there is room (print), else one under the other.
 export function groovingDiagrams(inputs, answer, container) {
-  return h(
-    'div',
-    { class: 'diagram-row' },
-    sectionView(inputs, answer, container),
-    patternView(answer),
-  );
+  return diagramRow(sectionView(inputs, answer, container), patternView(answer));
 }
 
 // ------------------------------------------------------------------ the groove, to scale
@@ -110,7 +105,7 @@ function sectionView({ grooveWidth: W, startDiameter: D0, leftZ: zL }, answer, c
       y: -(Rb - 0.25 * below),
       from1: -Rb,
       from2: -Rb,
-      text: t('diagram.grooving_width', { value: length(W) }),
+      text: dimensionText('W', W),
       arrow,
     }),
     horizontalDimension({
@@ -120,7 +115,7 @@ function sectionView({ grooveWidth: W, startDiameter: D0, leftZ: zL }, answer, c
       y: sy - toolHeight - 0.12 * size,
       from1: sy - toolHeight,
       from2: sy - toolHeight,
-      text: t('diagram.grooving_tool_width', { value: length(B) }),
+      text: dimensionText('B', B),
       arrow,
     }),
     horizontalDimension({
@@ -129,7 +124,7 @@ function sectionView({ grooveWidth: W, startDiameter: D0, leftZ: zL }, answer, c
       x2: zR,
       y: sy - 0.5 * toolHeight,
       from2: -R0,
-      text: t('diagram.grooving_shift', { value: length(X2) }),
+      text: dimensionText('X2', X2),
       arrow,
     }),
     verticalDimension({
@@ -139,23 +134,23 @@ function sectionView({ grooveWidth: W, startDiameter: D0, leftZ: zL }, answer, c
       y2: -Rb,
       from1: zR,
       from2: zR,
-      text: t('diagram.grooving_depth', { value: length(depth) }),
+      text: dimensionText('h', depth),
       arrow,
     }),
     s(
       'text',
       { 'data-role': 'start-diameter', x: zL - side, y: -R0, dx: '0.3em', dy: '-0.4em' },
-      t('diagram.grooving_start_diameter', { value: length(D0) }),
+      dimensionText('D0', D0),
     ),
     s(
       'text',
       { 'data-role': 'bottom-diameter', x: zL - side, y: -Rb, dx: '0.3em', dy: '1.2em' },
-      t('diagram.grooving_bottom_diameter', { value: length(answer.bottom_diameter_mm) }),
+      dimensionText('Db', answer.bottom_diameter_mm),
     ),
     s(
       'text',
       { 'data-role': 'start-point', x: sx, y: sy, dx: '0.4em', dy: '-0.5em' },
-      t('diagram.grooving_start_point', { value: length(answer.approach_diameter_mm) }),
+      t('diagram.grooving_start_point', { value: lengthText(answer.approach_diameter_mm) }),
     ),
   );
   return figure(
@@ -204,7 +199,7 @@ function patternView(answer) {
       s('text', { x: x(1), y: top - 14, 'text-anchor': 'middle' }, t('diagram.grooving_at_right')),
     ),
     s('text', { x: left - 10, y: y(0), dy: '0.35em', 'text-anchor': 'end' }, t('diagram.grooving_start_row')),
-    s('text', { x: x(1) + 14, y: y(0), dy: '0.35em' }, length(0)),
+    s('text', { x: x(1) + 14, y: y(0), dy: '0.35em' }, lengthText(0)),
   );
 
   const revolution = (k, from, to) =>
@@ -224,7 +219,7 @@ function patternView(answer) {
         { x: left - 10, y: to, dy: '0.35em', 'text-anchor': 'end' },
         t('diagram.grooving_revolution', { k }),
       ),
-      s('text', { x: x(1) + 14, y: to, dy: '0.35em' }, length(k * infeed)),
+      s('text', { x: x(1) + 14, y: to, dy: '0.35em' }, lengthText(k * infeed)),
     );
   for (let k = 1; k <= shown; k += 1) svg.append(revolution(k, y(k - 1), y(k)));
   if (skipped) {
@@ -253,7 +248,7 @@ function patternView(answer) {
       'text',
       { x: (x(0) + x(1)) / 2, y: yBottom, dy: '1.6em', 'text-anchor': 'middle' },
       t('diagram.grooving_final_shift', {
-        value: length(answer.shift_mm),
+        value: lengthText(answer.shift_mm),
         revolutions: fmt(answer.final_shift_revolutions),
       }),
     ),
@@ -272,9 +267,9 @@ function patternView(answer) {
       { cls: 's-final-shift', label: t('legend.final_shift') },
     ],
     t('diagram.grooving_pattern_caption', {
-      infeed: length(infeed),
-      shift: length(answer.shift_mm),
-      pitch: length(answer.wall_pitch_mm),
+      infeed: lengthText(infeed),
+      shift: lengthText(answer.shift_mm),
+      pitch: lengthText(answer.wall_pitch_mm),
     }),
   );
 }

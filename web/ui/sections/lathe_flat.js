@@ -2,26 +2,13 @@
 // the flatness error of N steps, layers, blocks, the block-rate limit and the time, the step table
 // with its CSV, the diagrams and the G93 lathe program with its download.
 
-import { onCalculate } from './calculation.js';
-import { csvButton } from './export.js';
-import {
-  at,
-  hideProgram,
-  showProgram,
-  wireProgramDownload,
-  fmt,
-  h,
-  readBody,
-  showFailure,
-  sym,
-  value,
-  valueList,
-  warningList,
-} from './form.js';
-import { flatDiagrams } from './flat_diagram.js';
-import { t, tn } from './i18n.js';
-import { machineTimeLine, markTimed, postWithMachine } from './machine.js';
-import { csvUnit, unitText } from './units.js';
+import { csvButton } from '../core/export.js';
+import { at, fmt, h, sym, value, valueList, warningList } from '../core/form.js';
+import { flatDiagrams } from '../diagrams/lathe_flat_diagram.js';
+import { programSection, programSource } from '../core/program_section.js';
+import { t, tn } from '../core/i18n.js';
+import { machineTimeLine } from '../core/machine.js';
+import { csvUnit, unitText } from '../core/units.js';
 
 const PATH = '/v1/lathe-flat';
 
@@ -36,49 +23,29 @@ const STEP_COLUMNS = [
 const describeCorners = (sharp) => t(sharp === true ? 'flat.corners.sharp' : 'flat.corners.lands');
 
 export function init() {
-  const form = document.getElementById('flat-form');
-  const result = document.getElementById('flat-result');
-  const download = document.getElementById('flat-download');
-  // The program's <pre> is part of the page from the start (hidden until there is a program).
-  const program = document.getElementById('flat-program');
-  let calculated = null; // the body of the last successful calculation
-  form.dataset.machine = 'lathe'; // timed on the page's machine profile when it is a lathe
-
-  const calculator = onCalculate(form, async (api) => {
-    const body = readBody(form);
-    const { answer, sent, note } = await postWithMachine(api, PATH, body, 'lathe', ['x', 'z', 'c']);
-    markTimed(form, sent);
-    result.replaceChildren();
-    if (!answer.ok) {
-      calculated = null;
-      download.disabled = true;
-      showFailure(form, answer);
-      hideProgram(program);
-      result.append(h('p', { class: 'placeholder' }, t('result.no_results')), program);
-      return;
-    }
-    calculated = sent;
-    download.disabled = false;
-    showProgram(program, answer.json);
-    result.append(
-      ...flatResults(answer.json, note),
+  return programSection({
+    id: 'flat',
+    path: PATH,
+    machine: 'lathe',
+    axes: () => ['x', 'z', 'c'],
+    fileName: 'CUTCALC.ngc',
+    results: (json, { body, note, result, program }) => [
+      ...flatResults(json, note),
       flatDiagrams(
         {
           partDiameter: Number(body.part_diameter_mm?.text),
           toolRadius: body.tool_radius_mm === undefined ? 0 : Number(body.tool_radius_mm.text),
           flats: body.flats === undefined ? 1 : Number(body.flats.text),
         },
-        answer.json,
+        json,
         result,
       ),
-      ...stepTable(answer.json),
-      ...programResults(answer.json),
+      ...stepTable(json),
+      h('h3', {}, t('result.g_code')),
+      programSource(json, PATH, 'result.flat_program_from'),
       program,
-    );
+    ],
   });
-
-  wireProgramDownload(download, form, PATH, () => calculated, 'CUTCALC.ngc');
-  return calculator;
 }
 
 // Spec section 8, in the order a setter reads them: the flat, its steps and flatness, the blocks
@@ -193,24 +160,6 @@ function stepTable(body) {
         at(body, `/steps_table/${k}/i`),
         ...STEP_COLUMNS.map(([key]) => at(body, `/steps_table/${k}/${key}`)),
       ]),
-    ),
-  ];
-}
-
-// The program's origin and form (the text itself is in the <pre> after it).
-function programResults(body) {
-  return [
-    h('h3', {}, t('result.g_code')),
-    h(
-      'p',
-      { class: 'source-note' },
-      t('result.flat_program_from', {
-        path: PATH,
-        dialect: body.dialect,
-        units: t(`program_units.${body.units}`),
-        decimals: body.decimals,
-        file: body.file_name,
-      }),
     ),
   ];
 }

@@ -2,9 +2,9 @@
 // with a target, the largest feed; the plot Rz(feed) and the bearing curve of the wall profile come
 // from the same request (curve_points, bearing_points).
 
-import { onCalculate } from './calculation.js';
-import { csvButton } from './export.js';
-import { feedCurvePlot } from './feed_curve.js';
+import { onCalculate } from '../core/calculation.js';
+import { csvButton } from '../core/export.js';
+import { feedCurvePlot } from '../diagrams/feed_curve.js';
 import {
   at,
   h,
@@ -14,10 +14,10 @@ import {
   iso,
   sym,
   valueList,
-} from './form.js';
-import { t, tn } from './i18n.js';
-import { csvUnit, fromApi, unitText } from './units.js';
-import { domain, figure, plot, points, s } from './svg.js';
+} from '../core/form.js';
+import { t, tn } from '../core/i18n.js';
+import { csvUnit, fromApi, unitText } from '../core/units.js';
+import { domain, figure, plot, points, s, subText } from '../core/svg.js';
 
 const PATH = '/v1/roughness/groove-wall';
 const CURVE_POINTS = 200;
@@ -125,11 +125,7 @@ function rzPlot(response, feedMm, target) {
     kind: 'rz-vs-feed',
     title: t('diagram.rz_plot_title'),
     xLabel: t('diagram.feed_axis', { unit: unitText('mm') }),
-    yLabel: [
-      'Rz',
-      s('tspan', { 'baseline-shift': 'sub', 'font-size': '0.75em' }, 'p'),
-      s('tspan', {}, `, ${unitText('um')}`),
-    ],
+    yLabel: subText('Rz', 'p', `, ${unitText('um')}`),
     curveLabel: 'Rz(S)',
     feedUnit: 'mm',
     curve: response.curve.map((p) => [fromApi(p.feed_mm, 'mm'), p.rz_um]),

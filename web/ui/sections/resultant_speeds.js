@@ -1,12 +1,12 @@
 // Resultant cutting speeds in turn-milling (paper 000): the points the user asked for, and
 // |v_e| along the whole engagement arc for up- and down-milling (two requests with arc_samples).
 
-import { onCalculate } from './calculation.js';
-import { csvButton } from './export.js';
-import { h, iso, noDiagram, readBody, showFailure, sym, value, valueList } from './form.js';
-import { t, tn } from './i18n.js';
-import { csvUnit, unitText } from './units.js';
-import { domain, figure, plot, points, s } from './svg.js';
+import { onCalculate } from '../core/calculation.js';
+import { csvButton } from '../core/export.js';
+import { h, iso, noDiagram, readBody, showFailure, sym, value, valueList } from '../core/form.js';
+import { t, tn } from '../core/i18n.js';
+import { csvUnit, unitText } from '../core/units.js';
+import { domain, figure, plot, points, s, subText } from '../core/svg.js';
 
 const PATH = '/v1/resultant-speeds';
 const ARC_SAMPLES = 91;
@@ -136,11 +136,7 @@ function speedPlot(upPoints, downPoints, main) {
     kind: 'speed-vs-angle',
     title: t('diagram.speed_plot_title'),
     xLabel: t('diagram.contact_angle_axis', { unit: unitText('deg') }),
-    yLabel: [
-      '|v',
-      s('tspan', { 'baseline-shift': 'sub', 'font-size': '0.75em' }, 'e'),
-      s('tspan', {}, `|, ${unitText('m_per_min')}`),
-    ],
+    yLabel: subText('|v', 'e', `|, ${unitText('m_per_min')}`),
     xDomain: domain(
       all.map((p) => p[0]),
       0.02,

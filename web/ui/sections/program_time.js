@@ -6,14 +6,14 @@
 // The program is not in the page's link (a program may be megabytes): the link keeps the machine
 // profile and the control only.
 
-import { onCalculate } from './calculation.js';
-import { csvButton } from './export.js';
-import { h, readBody, showFailure, showMessage, sym, value, valueList, warningList } from './form.js';
-import { t, tn } from './i18n.js';
-import { axisNames, wirePresets } from './machine.js';
-import { programHeaderOf } from './sheet_content.js';
-import { domain, figure, plot, points, s } from './svg.js';
-import { csvUnit, fromApi, unitText } from './units.js';
+import { onCalculate } from '../core/calculation.js';
+import { csvButton } from '../core/export.js';
+import { h, readBody, showFailure, showMessage, sym, value, valueList, warningList } from '../core/form.js';
+import { t, tn } from '../core/i18n.js';
+import { axisNames, wirePresets } from '../core/machine.js';
+import { programHeaderOf } from '../core/sheet_content.js';
+import { domain, figure, plot, points, s } from '../core/svg.js';
+import { csvUnit, fromApi, unitText } from '../core/units.js';
 
 const PATH = '/v1/program-time';
 // Samples of the velocity profile: enough for a smooth line at the plot's width.

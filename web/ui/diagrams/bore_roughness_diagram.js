@@ -3,10 +3,10 @@
 // centre path are to scale; the pitch angle alpha is drawn as it is unless it is too small to
 // see, and the cusp is magnified (its caption says by how much).
 
-import { fmt, h } from './form.js';
-import { t } from './i18n.js';
-import { arrowHead, diagram, figure, points, s, unitsPerPixel } from './svg.js';
-import { fromApi, unitText } from './units.js';
+import { fmt, h } from '../core/form.js';
+import { t } from '../core/i18n.js';
+import { arrowHead, diagram, diagramRow, figure, points, s, unitsPerPixel } from '../core/svg.js';
+import { fromApi, unitText } from '../core/units.js';
 
 // Below this the two cutter positions would lie on top of each other: the angle is opened up.
 const MIN_DRAWN_ANGLE_DEG = 24;
@@ -17,12 +17,7 @@ const towards = (angle) => [Math.sin(angle), Math.cos(angle)];
 
 // Both views side by side where there is room (print), else one under the other.
 export function boreDiagrams(inputs, answer, container) {
-  return h(
-    'div',
-    { class: 'diagram-row' },
-    boreView(inputs, answer, container),
-    cuspView(inputs, answer),
-  );
+  return diagramRow(boreView(inputs, answer, container), cuspView(inputs, answer));
 }
 
 // Delta to 4 significant digits: the cusp is often far below a micrometre.
