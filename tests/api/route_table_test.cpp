@@ -82,10 +82,13 @@ TEST(RouteTable, ARouteLackingItsPathReferenceFileOrPageIsNamed) {
   EXPECT_TRUE(mentions(problems, "no nav link to #thread")) << joined(problems);
 }
 
-// The module is checked once its folder exists under web/ui (the page's modules are moving into
-// web/ui/sections; until then the row names where each will be).
+// The page imports each section's module (web/ui/app.js); the row names it.
 TEST(RouteTable, EveryPageSectionNamesItsModule) {
   const std::filesystem::path ui = std::filesystem::path(CUTCALC_WEB_DIR) / "ui";
+  std::ifstream app_file(ui / "app.js");
+  const std::string app((std::istreambuf_iterator<char>(app_file)),
+                        std::istreambuf_iterator<char>());
+  ASSERT_FALSE(app.empty());
   for (const api::CalculationRoute& route : api::calculation_routes()) {
     if (route.page_section == api::kNoPage) {
       EXPECT_TRUE(route.page_module.empty()) << route.path;
@@ -93,9 +96,9 @@ TEST(RouteTable, EveryPageSectionNamesItsModule) {
     }
     ASSERT_TRUE(route.page_module.ends_with(".js")) << route.path;
     const std::filesystem::path module = ui / route.page_module;
-    if (std::filesystem::is_directory(module.parent_path())) {
-      EXPECT_TRUE(std::filesystem::is_regular_file(module)) << route.path << ": " << module;
-    }
+    EXPECT_TRUE(std::filesystem::is_regular_file(module)) << route.path << ": " << module;
+    EXPECT_NE(app.find("from './" + std::string(route.page_module) + "';"), std::string::npos)
+        << "web/ui/app.js does not import " << route.page_module;
   }
 }
 
@@ -182,7 +185,7 @@ TEST(RouteTable, PrintedAsJsonWithEveryField) {
   EXPECT_EQ(polygon["reference_files"], json({"polygon-hole.json", "next/polygon-hole.json"}));
   EXPECT_EQ(polygon["next_reference_files"], json({"next/polygon-hole.json"}));
   EXPECT_EQ(polygon["page_section"], "polygon");
-  EXPECT_EQ(polygon["page_module"], "sections/polygon.js");
+  EXPECT_EQ(polygon["page_module"], "sections/polygon_hole.js");
   EXPECT_EQ(polygon["heavy"], true);
   const json& main_time = rows[1];
   EXPECT_EQ(main_time["plot_field"], nullptr);
