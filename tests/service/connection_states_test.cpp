@@ -59,10 +59,7 @@ class StuckSource final : public domain::TextSource {
 class StatesEngine {
  public:
   StatesEngine() {
-    EventLoopSettings settings;
-    settings.loops = 1;
-    settings.pool.threads = 2;
-    settings.pool.nice_increment = 0;
+    EventLoopSettings settings = testing::small_engine_settings(2);
     settings.limits.keep_alive_timeout = std::chrono::seconds(1);
     settings.limits.request_timeout = kShort;
     settings.limits.write_timeout = kShort;
@@ -70,11 +67,7 @@ class StatesEngine {
     settings.limits.linger_time = kShort;
     engine_ = std::make_unique<EventLoopEngine>(
         settings, [this](const HttpRequest& request) { return serve(request); },
-        [](const EngineError&) {
-          return std::string(
-              "HTTP/1.1 400 Engine\r\nContent-Length: 0\r\nConnection: close\r\n\r\n");
-        },
-        [] { return ServerPhase::serving; }, counters_);
+        testing::bare_engine_error, [] { return ServerPhase::serving; }, counters_);
   }
   ~StatesEngine() {
     release_->open();  // a stuck piece ends before the pool goes

@@ -22,10 +22,7 @@ using testing::ParsedResponses;
 class PhaseEchoEngine {
  public:
   PhaseEchoEngine() {
-    EventLoopSettings settings;
-    settings.loops = 1;
-    settings.pool.threads = 1;
-    settings.pool.nice_increment = 0;
+    EventLoopSettings settings = testing::small_engine_settings();
     engine_ = std::make_unique<EventLoopEngine>(
         settings,
         [](const HttpRequest& request) -> Reply {
@@ -35,10 +32,7 @@ class PhaseEchoEngine {
           response.set_content(serving ? "serving" : "not serving", "text/plain");
           return response;
         },
-        [](const EngineError&) {
-          return std::string(
-              "HTTP/1.1 400 Engine\r\nContent-Length: 0\r\nConnection: close\r\n\r\n");
-        },
+        testing::bare_engine_error,
         // Every read of the phase flips it.
         [this] {
           return reads_.fetch_add(1) % 2 == 0 ? ServerPhase::serving : ServerPhase::draining;

@@ -73,18 +73,11 @@ std::string pattern(std::size_t total) {
 class StreamingEngine {
  public:
   explicit StreamingEngine(std::chrono::milliseconds write_timeout = std::chrono::seconds(5)) {
-    EventLoopSettings settings;
+    EventLoopSettings settings = testing::small_engine_settings();
     settings.limits.write_timeout = write_timeout;
-    settings.loops = 1;
-    settings.pool.threads = 1;
-    settings.pool.nice_increment = 0;
     engine_ = std::make_unique<EventLoopEngine>(
         settings, [this](const HttpRequest& request) { return serve(request); },
-        [](const EngineError&) {
-          return std::string(
-              "HTTP/1.1 400 Engine\r\nContent-Length: 0\r\nConnection: close\r\n\r\n");
-        },
-        [] { return ServerPhase::serving; }, counters_);
+        testing::bare_engine_error, [] { return ServerPhase::serving; }, counters_);
   }
   ~StreamingEngine() { engine_.reset(); }
   StreamingEngine(const StreamingEngine&) = delete;

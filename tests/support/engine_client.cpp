@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <thread>
 
 namespace cutcalc::testing {
@@ -13,6 +14,19 @@ namespace cutcalc::testing {
 namespace {
 constexpr int kPatienceMs =
     static_cast<int>(std::chrono::milliseconds(EngineClient::kPatience).count());
+}
+
+service::EventLoopSettings small_engine_settings(std::size_t pool_threads) {
+  service::EventLoopSettings settings;
+  settings.loops = 1;
+  settings.pool.threads = pool_threads;
+  settings.pool.nice_increment = 0;
+  return settings;
+}
+
+std::string bare_engine_error(const service::EngineError& error) {
+  return "HTTP/1.1 " + std::to_string(service::http_status(error.fault)) +
+         " Engine\r\nContent-Length: 0\r\nConnection: close\r\n\r\n";
 }
 
 EngineClient::EngineClient(service::EventLoopEngine& engine) {

@@ -10,6 +10,13 @@
 
 namespace cutcalc::testing {
 
+// The settings of an engine for byte-level tests: one loop and a pool of `pool_threads` at the
+// test's own priority; every limit at its default.
+service::EventLoopSettings small_engine_settings(std::size_t pool_threads = 1);
+
+// An engine error as a bare response with its status, for the tests that build their own engine.
+std::string bare_engine_error(const service::EngineError& error);
+
 class EngineClient {
  public:
   explicit EngineClient(service::EventLoopEngine& engine);
